@@ -1,0 +1,141 @@
+// Registry-driven benchmarks: one per technique × bundled scene × shadow-map size, timed
+// by GL timer queries (manual time = the technique's GPU frame time). A technique added
+// later appears here without touching this file.
+//
+// Own flags (before or after Google Benchmark's): --scenes=DIR (default: the bundled
+// scenes/), --shadow-maps=512,1024 (default 1024), --size=WxH (default 1280x720),
+// --backend=osmesa|egl. Counters: memory_bytes, cpu_ms, and one "<pass>_ms" per pass.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include "testbed/app/frame_runner.h"
+#include "testbed/core/error.h"
+#include "testbed/gl/context.h"
+
+namespace {
+
+struct Options {
+  std::filesystem::path scenes = std::filesystem::path(TESTBED_SOURCE_DIR) / "scenes";
+  std::vector<int> shadowMaps = {1024};
+  std::string size = "1280x720";
+  std::string backend = "osmesa";
+};
+
+// Takes our flags out of argv so Google Benchmark does not reject them.
+Options takeOwnFlags(int& argc, char** argv) {
+  Options options;
+  int kept = 1;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&](const char* prefix) -> const char* {
+      return arg.rfind(prefix, 0) == 0 ? argv[i] + std::strlen(prefix) : nullptr;
+    };
+    if (const char* v = value("--scenes=")) {
+      options.scenes = v;
+    } else if (const char* v = value("--shadow-maps=")) {
+      options.shadowMaps.clear();
+      std::stringstream list(v);
+      for (std::string item; std::getline(list, item, ',');) options.shadowMaps.push_back(std::stoi(item));
+    } else if (const char* v = value("--size=")) {
+      options.size = v;
+    } else if (const char* v = value("--backend=")) {
+      options.backend = v;
+    } else {
+      argv[kept++] = argv[i];
+    }
+  }
+  argc = kept;
+  return options;
+}
+
+// Scenes and runners live for the whole process: the G-buffer is not part of the timings.
+struct Fixture {
+  std::unique_ptr<testbed::GlContext> context;
+  std::map<std::string, testbed::Scene> scenes;
+  std::map<std::string, std::unique_ptr<testbed::FrameRunner>> runners;  // "scene@size"
+};
+Fixture g_fixture;
+
+testbed::FrameRunner& runnerFor(const std::string& scene, const testbed::RenderSettings& settings) {
+  const std::string key = scene + "@" + std::to_string(settings.shadowMapSize);
+  auto& runner = g_fixture.runners[key];
+  if (!runner) runner = std::make_unique<testbed::FrameRunner>(g_fixture.scenes.at(scene), settings);
+  return *runner;
+}
+
+void runTechnique(benchmark::State& state, std::string techniqueId, std::string scene,
+                  testbed::RenderSettings settings) {
+  const auto& technique = testbed::findTechnique(techniqueId);
+  const auto parameters = testbed::resolveParameters(technique.info->id, technique.info->parameters, {});
+  testbed::TechniqueSession session(runnerFor(scene, settings), technique, parameters);
+  session.renderFrame();  // warm-up
+  std::map<std::string, double> passTotals;
+  double cpuTotal = 0;
+  for (auto _ : state) {
+    const auto frame = session.renderFrame();
+    state.SetIterationTime(frame.times.totalMs * 1e-3);
+    for (const auto& [name, ms] : frame.times.passMs) passTotals[name] += ms;
+    cpuTotal += frame.cpuMs;
+  }
+  const double n = double(std::max<benchmark::IterationCount>(state.iterations(), 1));
+  state.counters["memory_bytes"] = double(session.memoryBytes());
+  state.counters["cpu_ms"] = cpuTotal / n;
+  for (const auto& [name, total] : passTotals) state.counters[name + "_ms"] = total / n;
+  state.SetLabel(g_fixture.context->description());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const Options options = takeOwnFlags(argc, argv);
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+
+    g_fixture.context = testbed::createContext(options.backend);
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(options.scenes))
+      if (entry.path().extension() == ".json") files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    if (files.empty()) throw testbed::InputError(options.scenes.string() + ": no scene files");
+
+    testbed::RenderSettings base;
+    base.size = [&] {
+      const auto x = options.size.find('x');
+      return glm::ivec2(std::stoi(options.size.substr(0, x)), std::stoi(options.size.substr(x + 1)));
+    }();
+    for (const auto& file : files) {
+      testbed::Scene scene = testbed::loadScene(file);
+      const std::string name = scene.name;
+      g_fixture.scenes.emplace(name, std::move(scene));
+      for (int shadowMap : options.shadowMaps) {
+        testbed::RenderSettings settings = base;
+        settings.shadowMapSize = shadowMap;
+        testbed::validateSettings(settings);
+        for (const auto& technique : testbed::registeredTechniques()) {
+          const std::string benchName = technique.info->id + "/" + name + "/" + std::to_string(shadowMap);
+          benchmark::RegisterBenchmark(benchName.c_str(), runTechnique, technique.info->id, name, settings)
+              ->UseManualTime()
+              ->Unit(benchmark::kMillisecond);
+        }
+      }
+    }
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    g_fixture.runners.clear();
+    return 0;
+  } catch (const testbed::InputError& error) {
+    std::cerr << "testbed_benchmarks: " << error.what() << "\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "testbed_benchmarks: error: " << error.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,59 @@
+// `testbed list [--json]`: every registered technique with its parameters.
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "testbed/app/commands.h"
+
+namespace testbed {
+namespace {
+
+nlohmann::json specJson(const ParameterSpec& spec) {
+  nlohmann::json j{{"name", spec.name}, {"type", typeName(spec.type)}, {"help", spec.help}};
+  std::visit([&](const auto& v) { j["default"] = v; }, spec.defaultValue);
+  if (spec.type == ParameterType::Int || spec.type == ParameterType::Float) {
+    j["min"] = spec.min;
+    j["max"] = spec.max;
+  }
+  if (spec.type == ParameterType::Choice) j["choices"] = spec.choices;
+  if (spec.oddOnly) j["odd_only"] = true;
+  return j;
+}
+
+}  // namespace
+
+CommandRunner addListCommand(CLI::App& app) {
+  auto* command = app.add_subcommand("list", "list the techniques and their parameters");
+  auto json = std::make_shared<bool>(false);
+  command->add_flag("--json", *json, "print JSON");
+  return [command, json]() {
+    if (!command->parsed()) return -1;
+    const auto techniques = registeredTechniques();
+    if (*json) {
+      nlohmann::json all = nlohmann::json::array();
+      for (const auto& t : techniques) {
+        nlohmann::json parameters = nlohmann::json::array();
+        for (const auto& spec : t.info->parameters) parameters.push_back(specJson(spec));
+        all.push_back({{"id", t.info->id},
+                       {"family", t.info->family},
+                       {"output", t.info->output == OutputKind::Hard ? "hard" : "filtered"},
+                       {"citation", t.info->citation},
+                       {"summary", t.info->summary},
+                       {"parameters", parameters}});
+      }
+      std::cout << all.dump(2) << "\n";
+      return 0;
+    }
+    for (const auto& t : techniques) {
+      std::cout << t.info->id << "  [" << t.info->family << ", "
+                << (t.info->output == OutputKind::Hard ? "hard" : "filtered") << "]  " << t.info->summary
+                << "\n    " << t.info->citation << "\n";
+      for (const auto& spec : t.info->parameters)
+        std::cout << "    --set " << spec.name << "=" << formatValue(spec.defaultValue) << "  ("
+                  << typeName(spec.type) << ") " << spec.help << "\n";
+    }
+    return 0;
+  };
+}
+
+}  // namespace testbed

@@ -1,0 +1,39 @@
+#pragma once
+// Subcommands of the `testbed` binary. Each registers its options on the CLI11 app and
+// returns the function that runs it after parsing.
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "testbed/app/frame_runner.h"
+
+namespace testbed {
+
+using CommandRunner = std::function<int()>;
+
+// Options shared by render/groundtruth/compare (README "Command line").
+struct CommonOptions {
+  std::string size = "1280x720";
+  int shadowMap = 1024;
+  std::string depthFormat = "16";
+  std::string backend = "osmesa";
+  int repeat = 1;
+  std::string out;
+
+  void addTo(CLI::App& command);
+  // Parses the text options; throws InputError naming the option.
+  RenderSettings settings() const;
+};
+
+// "1280x720" → {1280, 720}; throws InputError("--size: ...").
+glm::ivec2 parseSize(const std::string& text);
+// Collects repeated --set name=value into a map; throws InputError on a duplicate name.
+std::map<std::string, std::string> parseAssignments(const std::vector<std::string>& assignments);
+
+CommandRunner addListCommand(CLI::App& app);
+CommandRunner addRenderCommand(CLI::App& app);
+
+}  // namespace testbed

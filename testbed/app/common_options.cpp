@@ -1,0 +1,48 @@
+#include <charconv>
+
+#include "testbed/app/commands.h"
+#include "testbed/core/error.h"
+
+namespace testbed {
+
+void CommonOptions::addTo(CLI::App& command) {
+  command.add_option("--size", size, "screen size WxH")->capture_default_str();
+  command.add_option("--shadow-map", shadowMap, "shadow map side in texels")->capture_default_str();
+  command.add_option("--depth-format", depthFormat, "shadow map depth: 16, 24 or 32f")->capture_default_str();
+  command.add_option("--backend", backend, "GL context: osmesa or egl")->capture_default_str();
+  command.add_option("--repeat", repeat, "timed frames after one warm-up frame (medians)")->capture_default_str();
+  command.add_option("--out", out, "output folder")->required();
+}
+
+glm::ivec2 parseSize(const std::string& text) {
+  const auto x = text.find('x');
+  auto parse = [&](std::string_view part, int& value) {
+    const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
+    return ec == std::errc() && end == part.data() + part.size() && !part.empty();
+  };
+  glm::ivec2 size{0, 0};
+  if (x == std::string::npos || !parse(std::string_view(text).substr(0, x), size.x) ||
+      !parse(std::string_view(text).substr(x + 1), size.y))
+    throw InputError("--size: expected WxH such as 1280x720, got '" + text + "'");
+  return size;
+}
+
+RenderSettings CommonOptions::settings() const {
+  RenderSettings s;
+  s.size = parseSize(size);
+  s.shadowMapSize = shadowMap;
+  s.depthFormat = parseDepthFormat(depthFormat);
+  s.repeat = repeat;
+  return s;
+}
+
+std::map<std::string, std::string> parseAssignments(const std::vector<std::string>& assignments) {
+  std::map<std::string, std::string> raw;
+  for (const auto& text : assignments) {
+    auto [name, value] = splitAssignment(text);
+    if (!raw.emplace(name, value).second) throw InputError("--set " + text + ": '" + name + "' set twice");
+  }
+  return raw;
+}
+
+}  // namespace testbed

@@ -1,0 +1,104 @@
+#pragma once
+// The harness around techniques: uploads a scene, renders the G-buffer, runs a technique
+// for a warm-up frame plus `repeat` timed frames, and reads back its visibility.
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include "testbed/gl/pass_timer.h"
+#include "testbed/io/image_io.h"
+#include "testbed/render/depth_format.h"
+#include "testbed/render/gbuffer_pass.h"
+#include "testbed/render/gpu_scene.h"
+#include "testbed/scene/scene.h"
+#include "testbed/technique/registry.h"
+
+namespace testbed {
+
+struct RenderSettings {
+  glm::ivec2 size{1280, 720};
+  int shadowMapSize = 1024;
+  DepthFormat depthFormat = DepthFormat::D16;
+  int repeat = 1;  // timed frames after the warm-up frame; times are medians
+};
+
+// Upper bounds that keep a typo (--size 100000x100000) from exhausting the machine.
+inline constexpr int kMaxScreenSide = 8192;
+inline constexpr int kMaxShadowMapSize = 16384;
+inline constexpr int kMaxRepeat = 10000;
+
+// Throws InputError naming the option for sizes outside [1, max] or beyond the GL limits
+// of the current context.
+void validateSettings(const RenderSettings& settings);
+
+struct TechniqueRun {
+  std::string id;
+  nlohmann::json params;
+  ImageF visibility;         // one channel, top-down, NaN where no receiver
+  PassTimes times;           // medians over the timed frames
+  double cpuMs = 0;          // median wall time of a frame, glFinish to glFinish
+  std::uint64_t memoryBytes = 0;
+};
+
+class FrameRunner;
+
+// One technique instance bound to a runner: its visibility target, its memory ledger and
+// its timer. The benchmark drives frames one by one; FrameRunner::run() uses it too.
+class TechniqueSession {
+ public:
+  TechniqueSession(FrameRunner& runner, const RegisteredTechnique& technique, const ParameterSet& parameters);
+  ~TechniqueSession();
+
+  struct Frame {
+    PassTimes times;
+    double cpuMs = 0;
+  };
+  Frame renderFrame();
+  std::uint64_t memoryBytes() const { return ledger_.bytes(); }
+  // Reads the last frame's visibility: one channel, top-down, NaN where no receiver.
+  ImageF visibility() const;
+
+ private:
+  FrameRunner& runner_;
+  GpuMemoryLedger ledger_;
+  Texture visibility_;
+  Framebuffer target_;
+  PassTimer timer_;
+  std::unique_ptr<ShadowTechnique> instance_;
+  std::string id_;
+};
+
+class FrameRunner {
+ public:
+  // Needs a current GL context.
+  FrameRunner(const Scene& scene, const RenderSettings& settings);
+  ~FrameRunner();
+
+  TechniqueRun run(const RegisteredTechnique& technique, const ParameterSet& parameters);
+  // Shaded image for people: Lambert × visibility plus ambient, RGB.
+  ImageF shade(const ImageF& visibility) const;
+
+  const Scene& scene() const { return scene_; }
+  const RenderSettings& settings() const { return settings_; }
+  double gbufferMs() const { return gbufferMs_; }
+  std::size_t triangleCount() const { return geometry_.triangleCount(); }
+
+ private:
+  friend class TechniqueSession;
+  FrameInputs inputs() const;
+
+  const Scene& scene_;
+  RenderSettings settings_;
+  GpuScene geometry_;
+  GBuffer gbuffer_;
+  double gbufferMs_ = 0;
+  ImageF positions_, normals_;  // G-buffer readback for shading, top-down
+};
+
+// The record of one run (README "Record"); `error` is null until compared with ground truth.
+nlohmann::json makeRecord(const TechniqueRun& run, const FrameRunner& runner, const std::string& backend);
+
+}  // namespace testbed

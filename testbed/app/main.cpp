@@ -1,0 +1,38 @@
+// The `testbed` command line (README "Command line"). Exit codes: 0 success, 2 bad input
+// (one line naming the file/option/field), 1 any other failure.
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "testbed/app/commands.h"
+#include "testbed/core/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"shadow testbed: shadow-mapping techniques measured against exact ground truth"};
+  app.require_subcommand(1);
+  const std::vector<testbed::CommandRunner> commands = {testbed::addListCommand(app),
+                                                        testbed::addRenderCommand(app)};
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::CallForAllHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::ParseError& error) {
+    std::cerr << "testbed: " << error.what() << "\n";
+    return 2;
+  }
+  try {
+    for (const auto& command : commands) {
+      const int code = command();
+      if (code >= 0) return code;
+    }
+    return 2;
+  } catch (const testbed::InputError& error) {
+    std::cerr << "testbed: " << error.what() << "\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "testbed: error: " << error.what() << "\n";
+    return 1;
+  }
+}

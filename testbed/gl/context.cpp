@@ -1,0 +1,49 @@
+#include "testbed/gl/context.h"
+
+#include "testbed/core/error.h"
+#include "testbed/gl/gl.h"
+
+namespace testbed {
+namespace {
+
+// glad wants a loader with its own signature; the backend's is stored here for the call.
+void* (*g_getProc)(const char*) = nullptr;
+GLADapiproc loadThroughBackend(const char* name) {
+  return reinterpret_cast<GLADapiproc>(g_getProc(name));
+}
+
+}  // namespace
+
+void GlContext::finishSetup(void* (*getProc)(const char*)) {
+  g_getProc = getProc;
+  const int version = gladLoadGL(loadThroughBackend);
+  g_getProc = nullptr;
+  if (version == 0) throw GlError(std::string(backendName()) + ": could not load OpenGL functions");
+  if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 45) {
+    throw GlError(std::string(backendName()) + ": OpenGL 4.5 core is required, got " +
+                  std::to_string(GLAD_VERSION_MAJOR(version)) + "." +
+                  std::to_string(GLAD_VERSION_MINOR(version)));
+  }
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  description_ = std::string(backendName()) + ": " + (renderer ? renderer : "unknown renderer");
+}
+
+std::vector<std::string> availableBackends() {
+#ifdef TESTBED_WITH_EGL
+  return {"osmesa", "egl"};
+#else
+  return {"osmesa"};
+#endif
+}
+
+std::unique_ptr<GlContext> createContext(std::string_view backend) {
+  if (backend == "osmesa") return createOsmesaContext();
+#ifdef TESTBED_WITH_EGL
+  if (backend == "egl") return createEglContext();
+#endif
+  std::string known;
+  for (const auto& name : availableBackends()) known += (known.empty() ? "" : ", ") + name;
+  throw InputError("--backend: unknown backend '" + std::string(backend) + "' (available: " + known + ")");
+}
+
+}  // namespace testbed

@@ -1,0 +1,276 @@
+#include "testbed/gl/objects.h"
+
+#include <atomic>
+#include <string>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "testbed/core/error.h"
+#include "testbed/gl/shader_library.h"
+
+namespace testbed {
+namespace {
+
+thread_local GpuMemoryLedger* t_currentLedger = nullptr;
+std::atomic<std::uint64_t> g_processBytes{0};
+
+}  // namespace
+
+GpuMemoryLedger::Scope::Scope(GpuMemoryLedger& ledger) : previous_(t_currentLedger) {
+  t_currentLedger = &ledger;
+}
+GpuMemoryLedger::Scope::~Scope() { t_currentLedger = previous_; }
+GpuMemoryLedger* GpuMemoryLedger::current() { return t_currentLedger; }
+std::uint64_t GpuMemoryLedger::processBytes() { return g_processBytes.load(); }
+
+std::uint32_t bytesPerTexel(GLenum format) {
+  switch (format) {
+    case GL_R8: return 1;
+    case GL_RG8: case GL_R16: case GL_R16F: case GL_DEPTH_COMPONENT16: return 2;
+    case GL_RGBA8: case GL_RG16: case GL_RG16F: case GL_R32F: case GL_R32UI: case GL_R32I:
+    case GL_RGB10_A2: case GL_R11F_G11F_B10F:
+    case GL_DEPTH_COMPONENT24: case GL_DEPTH_COMPONENT32F: case GL_DEPTH24_STENCIL8: return 4;
+    case GL_RGBA16: case GL_RGBA16F: case GL_RG32F: case GL_RG32UI: case GL_RG32I:
+    case GL_DEPTH32F_STENCIL8: return 8;
+    case GL_RGBA32F: case GL_RGBA32UI: case GL_RGBA32I: return 16;
+    default: throw GlError("bytesPerTexel: unsupported internal format " + std::to_string(format));
+  }
+}
+
+GlObject::GlObject(GLuint id, std::uint64_t bytes, Deleter deleter)
+    : id_(id), bytes_(bytes), deleter_(deleter), ledger_(t_currentLedger) {
+  if (ledger_) ledger_->add(static_cast<std::int64_t>(bytes_));
+  g_processBytes += bytes_;
+}
+
+GlObject::GlObject(GlObject&& other) noexcept
+    : id_(other.id_), bytes_(other.bytes_), deleter_(other.deleter_), ledger_(other.ledger_) {
+  other.id_ = 0;
+  other.bytes_ = 0;
+  other.ledger_ = nullptr;
+}
+
+GlObject& GlObject::operator=(GlObject&& other) noexcept {
+  if (this != &other) {
+    release();
+    id_ = other.id_;
+    bytes_ = other.bytes_;
+    deleter_ = other.deleter_;
+    ledger_ = other.ledger_;
+    other.id_ = 0;
+    other.bytes_ = 0;
+    other.ledger_ = nullptr;
+  }
+  return *this;
+}
+
+GlObject::~GlObject() { release(); }
+
+void GlObject::release() {
+  if (id_ != 0 && deleter_) deleter_(id_);
+  if (ledger_) ledger_->add(-static_cast<std::int64_t>(bytes_));
+  g_processBytes -= bytes_;
+  id_ = 0;
+  bytes_ = 0;
+  ledger_ = nullptr;
+}
+
+// --- Texture ---------------------------------------------------------------------------
+
+Texture::Texture(GLuint id, std::uint64_t bytes, GLenum format, int width, int height, int levels)
+    : GlObject(id, bytes, [](GLuint name) { glDeleteTextures(1, &name); }),
+      format_(format), width_(width), height_(height), levels_(levels) {}
+
+Texture Texture::create2D(GLenum internalFormat, int width, int height, int levels) {
+  if (width <= 0 || height <= 0) throw GlError("texture size must be positive");
+  if (levels <= 0) {
+    levels = 1;
+    for (int extent = std::max(width, height); extent > 1; extent /= 2) ++levels;
+  }
+  std::uint64_t bytes = 0;
+  for (int level = 0, w = width, h = height; level < levels; ++level) {
+    bytes += std::uint64_t(w) * std::uint64_t(h) * bytesPerTexel(internalFormat);
+    w = std::max(1, w / 2);
+    h = std::max(1, h / 2);
+  }
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &id);
+  glTextureStorage2D(id, levels, internalFormat, width, height);
+  Texture texture(id, bytes, internalFormat, width, height, levels);
+  checkGlError("allocating a " + std::to_string(width) + "x" + std::to_string(height) + " texture");
+  texture.setFilter(GL_NEAREST, GL_NEAREST);
+  texture.setWrap(GL_CLAMP_TO_EDGE);
+  return texture;
+}
+
+void Texture::setFilter(GLenum minFilter, GLenum magFilter) const {
+  glTextureParameteri(id(), GL_TEXTURE_MIN_FILTER, static_cast<GLint>(minFilter));
+  glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, static_cast<GLint>(magFilter));
+}
+
+void Texture::setWrap(GLenum wrap, const glm::vec4& border) const {
+  glTextureParameteri(id(), GL_TEXTURE_WRAP_S, static_cast<GLint>(wrap));
+  glTextureParameteri(id(), GL_TEXTURE_WRAP_T, static_cast<GLint>(wrap));
+  glTextureParameterfv(id(), GL_TEXTURE_BORDER_COLOR, glm::value_ptr(border));
+}
+
+std::vector<float> Texture::readFloats(int components) const {
+  static constexpr GLenum kFormats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
+  if (components < 1 || components > 4) throw GlError("readFloats: 1 to 4 components");
+  const bool depth = format_ == GL_DEPTH_COMPONENT16 || format_ == GL_DEPTH_COMPONENT24 ||
+                     format_ == GL_DEPTH_COMPONENT32F;
+  std::vector<float> data(std::size_t(width_) * height_ * components);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(id(), 0, depth ? GL_DEPTH_COMPONENT : kFormats[components - 1], GL_FLOAT,
+                    static_cast<GLsizei>(data.size() * sizeof(float)), data.data());
+  checkGlError("reading back a texture");
+  return data;
+}
+
+// --- Buffer, Framebuffer, VertexArray --------------------------------------------------
+
+Buffer::Buffer(GLuint id, std::uint64_t bytes)
+    : GlObject(id, bytes, [](GLuint name) { glDeleteBuffers(1, &name); }) {}
+
+Buffer Buffer::create(std::size_t bytes, const void* data, GLbitfield flags) {
+  GLuint id = 0;
+  glCreateBuffers(1, &id);
+  glNamedBufferStorage(id, static_cast<GLsizeiptr>(bytes), data, flags);
+  Buffer buffer(id, bytes);
+  checkGlError("allocating a buffer");
+  return buffer;
+}
+
+Framebuffer::Framebuffer(GLuint id)
+    : GlObject(id, 0, [](GLuint name) { glDeleteFramebuffers(1, &name); }) {}
+
+Framebuffer Framebuffer::create() {
+  GLuint id = 0;
+  glCreateFramebuffers(1, &id);
+  return Framebuffer(id);
+}
+
+void Framebuffer::attachColor(int index, const Texture& texture, int level) const {
+  glNamedFramebufferTexture(id(), GL_COLOR_ATTACHMENT0 + index, texture.id(), level);
+}
+
+void Framebuffer::attachDepth(const Texture& texture, int level) const {
+  glNamedFramebufferTexture(id(), GL_DEPTH_ATTACHMENT, texture.id(), level);
+}
+
+void Framebuffer::finish(std::initializer_list<int> colorIndices) const {
+  std::vector<GLenum> buffers;
+  for (int index : colorIndices) buffers.push_back(GL_COLOR_ATTACHMENT0 + index);
+  if (buffers.empty()) {
+    glNamedFramebufferDrawBuffer(id(), GL_NONE);
+    glNamedFramebufferReadBuffer(id(), GL_NONE);
+  } else {
+    glNamedFramebufferDrawBuffers(id(), static_cast<GLsizei>(buffers.size()), buffers.data());
+  }
+  const GLenum status = glCheckNamedFramebufferStatus(id(), GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE)
+    throw GlError("framebuffer incomplete (status " + std::to_string(status) + ")");
+}
+
+VertexArray::VertexArray(GLuint id)
+    : GlObject(id, 0, [](GLuint name) { glDeleteVertexArrays(1, &name); }) {}
+
+VertexArray VertexArray::create() {
+  GLuint id = 0;
+  glCreateVertexArrays(1, &id);
+  return VertexArray(id);
+}
+
+// --- Program ---------------------------------------------------------------------------
+
+namespace {
+
+GLuint compileStage(GLenum stage, std::string_view key, std::string_view defines) {
+  std::string source = expandShaderSource(key);
+  // The defines go right after the #version line, which must stay first.
+  const auto versionEnd = source.find('\n');
+  if (source.rfind("#version", 0) != 0 || versionEnd == std::string::npos)
+    throw GlError(std::string(key) + ": shader must start with #version");
+  source.insert(versionEnd + 1, std::string(defines));
+  const char* text = source.c_str();
+  GLuint shader = glCreateShader(stage);
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    std::string log(std::size_t(std::max(length, 1)), '\0');
+    glGetShaderInfoLog(shader, length, nullptr, log.data());
+    glDeleteShader(shader);
+    throw GlError(std::string(key) + ": compile error:\n" + log);
+  }
+  return shader;
+}
+
+GLuint link(std::initializer_list<GLuint> shaders, std::string_view what) {
+  GLuint program = glCreateProgram();
+  for (GLuint shader : shaders) glAttachShader(program, shader);
+  glLinkProgram(program);
+  for (GLuint shader : shaders) glDeleteShader(shader);
+  GLint ok = 0;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+    std::string log(std::size_t(std::max(length, 1)), '\0');
+    glGetProgramInfoLog(program, length, nullptr, log.data());
+    glDeleteProgram(program);
+    throw GlError(std::string(what) + ": link error:\n" + log);
+  }
+  return program;
+}
+
+}  // namespace
+
+Program::Program(GLuint id) : GlObject(id, 0, [](GLuint name) { glDeleteProgram(name); }) {}
+
+Program Program::graphics(std::string_view vertexKey, std::string_view fragmentKey,
+                          std::string_view defines) {
+  GLuint vs = compileStage(GL_VERTEX_SHADER, vertexKey, defines);
+  GLuint fs = 0;
+  try {
+    fs = compileStage(GL_FRAGMENT_SHADER, fragmentKey, defines);
+  } catch (...) {
+    glDeleteShader(vs);
+    throw;
+  }
+  return Program(link({vs, fs}, fragmentKey));
+}
+
+Program Program::compute(std::string_view computeKey, std::string_view defines) {
+  return Program(link({compileStage(GL_COMPUTE_SHADER, computeKey, defines)}, computeKey));
+}
+
+GLint Program::location(const char* name) const { return glGetUniformLocation(id(), name); }
+void Program::set(const char* name, int v) const { glProgramUniform1i(id(), location(name), v); }
+void Program::set(const char* name, float v) const { glProgramUniform1f(id(), location(name), v); }
+void Program::set(const char* name, const glm::vec2& v) const {
+  glProgramUniform2fv(id(), location(name), 1, glm::value_ptr(v));
+}
+void Program::set(const char* name, const glm::vec3& v) const {
+  glProgramUniform3fv(id(), location(name), 1, glm::value_ptr(v));
+}
+void Program::set(const char* name, const glm::vec4& v) const {
+  glProgramUniform4fv(id(), location(name), 1, glm::value_ptr(v));
+}
+void Program::set(const char* name, const glm::ivec2& v) const {
+  glProgramUniform2iv(id(), location(name), 1, glm::value_ptr(v));
+}
+void Program::set(const char* name, const glm::mat4& v) const {
+  glProgramUniformMatrix4fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(v));
+}
+
+void checkGlError(std::string_view what) {
+  const GLenum error = glGetError();
+  if (error != GL_NO_ERROR)
+    throw GlError("GL error " + std::to_string(error) + " while " + std::string(what));
+}
+
+}  // namespace testbed

@@ -1,0 +1,154 @@
+#pragma once
+// Move-only RAII owners of GL objects. Every allocation is booked in a GpuMemoryLedger so
+// a technique's memory footprint is measured from what it really allocates, never typed in.
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "testbed/gl/gl.h"
+
+namespace testbed {
+
+// Sums the bytes of the GL objects created while it is the current ledger (see Scope);
+// each object returns its bytes to the ledger it was booked in when it is destroyed.
+class GpuMemoryLedger {
+ public:
+  GpuMemoryLedger() = default;
+  GpuMemoryLedger(const GpuMemoryLedger&) = delete;
+  GpuMemoryLedger& operator=(const GpuMemoryLedger&) = delete;
+
+  std::uint64_t bytes() const { return bytes_; }
+  void add(std::int64_t delta) { bytes_ += static_cast<std::uint64_t>(delta); }
+
+  // Makes `ledger` current on this thread for the scope's lifetime (nests).
+  class Scope {
+   public:
+    explicit Scope(GpuMemoryLedger& ledger);
+    ~Scope();
+    Scope(const Scope&) = delete;
+    Scope& operator=(const Scope&) = delete;
+
+   private:
+    GpuMemoryLedger* previous_;
+  };
+  static GpuMemoryLedger* current();
+  // Every live object of the process, whatever ledger booked it.
+  static std::uint64_t processBytes();
+
+ private:
+  std::uint64_t bytes_ = 0;
+};
+
+// Bytes per texel of a sized internal format as the hardware stores it (24-bit depth is
+// padded to 32 bits by every driver we know, so it counts 4).
+std::uint32_t bytesPerTexel(GLenum internalFormat);
+
+// Shared base: owns the name and its booked bytes.
+class GlObject {
+ public:
+  GlObject() = default;
+  GlObject(GlObject&& other) noexcept;
+  GlObject& operator=(GlObject&& other) noexcept;
+  GlObject(const GlObject&) = delete;
+  GlObject& operator=(const GlObject&) = delete;
+
+  GLuint id() const { return id_; }
+  explicit operator bool() const { return id_ != 0; }
+  std::uint64_t bytes() const { return bytes_; }
+
+ protected:
+  using Deleter = void (*)(GLuint);
+  GlObject(GLuint id, std::uint64_t bytes, Deleter deleter);
+  ~GlObject();
+  void release();
+
+ private:
+  GLuint id_ = 0;
+  std::uint64_t bytes_ = 0;
+  Deleter deleter_ = nullptr;
+  GpuMemoryLedger* ledger_ = nullptr;
+};
+
+class Texture : public GlObject {
+ public:
+  Texture() = default;
+  // Immutable 2D storage; levels = 0 means a full mip chain.
+  static Texture create2D(GLenum internalFormat, int width, int height, int levels = 1);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  int levels() const { return levels_; }
+  GLenum internalFormat() const { return format_; }
+
+  void setFilter(GLenum minFilter, GLenum magFilter) const;
+  void setWrap(GLenum wrap, const glm::vec4& border = glm::vec4(0)) const;
+  // Reads level 0 as floats (`components` of GL_RED/GL_RG/GL_RGB/GL_RGBA), rows bottom-up.
+  std::vector<float> readFloats(int components) const;
+
+ private:
+  Texture(GLuint id, std::uint64_t bytes, GLenum format, int width, int height, int levels);
+  GLenum format_ = 0;
+  int width_ = 0, height_ = 0, levels_ = 0;
+};
+
+class Buffer : public GlObject {
+ public:
+  Buffer() = default;
+  static Buffer create(std::size_t bytes, const void* data, GLbitfield flags = 0);
+
+ private:
+  Buffer(GLuint id, std::uint64_t bytes) ;
+};
+
+class Framebuffer : public GlObject {
+ public:
+  Framebuffer() = default;
+  static Framebuffer create();
+  void attachColor(int index, const Texture& texture, int level = 0) const;
+  void attachDepth(const Texture& texture, int level = 0) const;
+  // Sets the draw buffers to the attached color indices and checks completeness.
+  void finish(std::initializer_list<int> colorIndices) const;
+
+ private:
+  explicit Framebuffer(GLuint id);
+};
+
+class VertexArray : public GlObject {
+ public:
+  VertexArray() = default;
+  static VertexArray create();
+
+ private:
+  explicit VertexArray(GLuint id);
+};
+
+// A linked program built from embedded shader sources (keys of the shader library).
+class Program : public GlObject {
+ public:
+  Program() = default;
+  // `defines` is prepended after #version (e.g. "#define KERNEL 3\n").
+  static Program graphics(std::string_view vertexKey, std::string_view fragmentKey,
+                          std::string_view defines = {});
+  static Program compute(std::string_view computeKey, std::string_view defines = {});
+
+  GLint location(const char* name) const;
+  void set(const char* name, int value) const;
+  void set(const char* name, float value) const;
+  void set(const char* name, const glm::vec2& value) const;
+  void set(const char* name, const glm::vec3& value) const;
+  void set(const char* name, const glm::vec4& value) const;
+  void set(const char* name, const glm::ivec2& value) const;
+  void set(const char* name, const glm::mat4& value) const;
+  void use() const { glUseProgram(id()); }
+
+ private:
+  explicit Program(GLuint id);
+};
+
+// Throws GlError naming `what` if the GL error flag is set.
+void checkGlError(std::string_view what);
+
+}  // namespace testbed

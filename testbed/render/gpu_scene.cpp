@@ -1,0 +1,53 @@
+#include "testbed/render/gpu_scene.h"
+
+#include <cmath>
+#include <vector>
+
+namespace testbed {
+namespace {
+
+// Meshes stay welded on the CPU (the ground truth needs their adjacency), so hard edges
+// such as a box's are recovered here: a corner whose smooth normal strays more than this
+// angle from its face's normal takes the face normal.
+const float kCreaseCosine = std::cos(40.0f * 3.14159265f / 180.0f);
+
+struct Vertex {
+  float position[3];
+  float normal[3];
+};
+
+}  // namespace
+
+GpuScene::GpuScene(const Scene& scene) {
+  std::vector<Vertex> vertices;
+  for (const auto& object : scene.objects) {
+    const TriMesh& mesh = object.mesh;
+    for (const auto face : mesh.faces()) {
+      const auto faceNormal = mesh.normal(face);
+      for (const auto vertex : face.vertices()) {
+        auto normal = mesh.normal(vertex);
+        if (OpenMesh::dot(normal, faceNormal) < kCreaseCosine || !std::isfinite(normal[0])) normal = faceNormal;
+        const auto& p = mesh.point(vertex);
+        vertices.push_back({{p[0], p[1], p[2]}, {normal[0], normal[1], normal[2]}});
+      }
+    }
+  }
+  vertexCount_ = vertices.size();
+  vertices_ = Buffer::create(vertices.size() * sizeof(Vertex), vertices.data());
+  vertexArray_ = VertexArray::create();
+  const GLuint vao = vertexArray_.id();
+  glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(Vertex));
+  glEnableVertexArrayAttrib(vao, 0);
+  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, position));
+  glVertexArrayAttribBinding(vao, 0, 0);
+  glEnableVertexArrayAttrib(vao, 1);
+  glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, normal));
+  glVertexArrayAttribBinding(vao, 1, 0);
+}
+
+void GpuScene::draw() const {
+  glBindVertexArray(vertexArray_.id());
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertexCount_));
+}
+
+}  // namespace testbed

@@ -1,0 +1,24 @@
+#pragma once
+// The scene's triangles on the GPU: one interleaved buffer (position, normal) drawn as a
+// single non-indexed triangle list, shared by the G-buffer and the shadow-map passes.
+#include <cstddef>
+
+#include "testbed/gl/objects.h"
+#include "testbed/scene/scene.h"
+
+namespace testbed {
+
+class GpuScene {
+ public:
+  explicit GpuScene(const Scene& scene);
+  // Binds the vertex array and draws every triangle (attribute 0 position, 1 normal).
+  void draw() const;
+  std::size_t triangleCount() const { return vertexCount_ / 3; }
+
+ private:
+  Buffer vertices_;
+  VertexArray vertexArray_;
+  std::size_t vertexCount_ = 0;
+};
+
+}  // namespace testbed

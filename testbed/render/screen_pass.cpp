@@ -1,0 +1,18 @@
+#include "testbed/render/screen_pass.h"
+
+namespace testbed {
+
+ScreenPass::ScreenPass() : empty_(VertexArray::create()) {}
+
+void ScreenPass::draw(const Program& program, const Framebuffer& target, glm::ivec2 size) const {
+  glBindFramebuffer(GL_FRAMEBUFFER, target.id());
+  glViewport(0, 0, size.x, size.y);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  program.use();
+  glBindVertexArray(empty_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+}  // namespace testbed

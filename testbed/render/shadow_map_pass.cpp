@@ -1,0 +1,90 @@
+#include "testbed/render/shadow_map_pass.h"
+
+#include "testbed/core/error.h"
+#include "testbed/render/gbuffer_pass.h"
+#include "testbed/technique/technique.h"
+
+namespace testbed {
+
+DepthFormat parseDepthFormat(std::string_view text) {
+  if (text == "16") return DepthFormat::D16;
+  if (text == "24") return DepthFormat::D24;
+  if (text == "32f" || text == "32F") return DepthFormat::D32F;
+  throw InputError("--depth-format: expected 16, 24 or 32f, got '" + std::string(text) + "'");
+}
+
+std::string depthFormatName(DepthFormat format) {
+  switch (format) {
+    case DepthFormat::D16: return "16";
+    case DepthFormat::D24: return "24";
+    case DepthFormat::D32F: return "32f";
+  }
+  return "?";
+}
+
+GLenum depthInternalFormat(DepthFormat format) {
+  switch (format) {
+    case DepthFormat::D16: return GL_DEPTH_COMPONENT16;
+    case DepthFormat::D24: return GL_DEPTH_COMPONENT24;
+    case DepthFormat::D32F: return GL_DEPTH_COMPONENT32F;
+  }
+  return GL_DEPTH_COMPONENT16;
+}
+
+std::vector<ParameterSpec> ShadowMapPass::parameters() {
+  return {
+      ParameterSpec::real("offset_factor", 4.0, 0.0, 100.0,
+                          "glPolygonOffset factor while rendering the shadow map (slope term)"),
+      ParameterSpec::real("offset_units", 20.0, 0.0, 100000.0,
+                          "glPolygonOffset units while rendering the shadow map (constant term)"),
+  };
+}
+
+void ShadowMapPass::configure(const ParameterSet& parameters) {
+  offsetFactor_ = static_cast<float>(parameters.getFloat("offset_factor"));
+  offsetUnits_ = static_cast<float>(parameters.getFloat("offset_units"));
+}
+
+void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
+  const GLenum format = depthInternalFormat(in.depthFormat);
+  if (!depth_ || depth_.width() != in.shadowMapSize || depth_.internalFormat() != format) {
+    depth_ = Texture::create2D(format, in.shadowMapSize, in.shadowMapSize);
+    depth_.setFilter(GL_NEAREST, GL_NEAREST);
+    depth_.setWrap(GL_CLAMP_TO_BORDER, glm::vec4(0.0f));
+    framebuffer_ = Framebuffer::create();
+    framebuffer_.attachDepth(depth_);
+    framebuffer_.finish({});
+  }
+  if (!program_) program_ = Program::graphics("testbed/render/shadow_map.vert", "testbed/render/shadow_map.frag");
+
+  auto scope = timer.scope("shadow-map");
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+  glViewport(0, 0, in.shadowMapSize, in.shadowMapSize);
+  glClearNamedFramebufferfi(framebuffer_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);  // open meshes cast shadows from both sides
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(offsetFactor_, offsetUnits_);
+  program_.use();
+  program_.set("uLightViewProjection", in.light.viewProjection());
+  in.geometry.draw();
+  glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+void bindReceiverInputs(const Program& program, const FrameInputs& in, const Texture& shadowMap) {
+  glBindTextureUnit(0, in.gbuffer.position().id());
+  glBindTextureUnit(1, in.gbuffer.normal().id());
+  glBindTextureUnit(2, shadowMap.id());
+  program.set("uGPosition", 0);
+  program.set("uGNormal", 1);
+  program.set("uShadowMap", 2);
+  program.set("uLightViewProjection", in.light.viewProjection());
+  program.set("uLightPosition", in.light.position);
+  program.set("uLightDirection", in.light.direction);
+  program.set("uLightOrthographic", in.light.orthographic ? 1 : 0);
+  program.set("uShadowMapSize", glm::ivec2(shadowMap.width(), shadowMap.height()));
+}
+
+}  // namespace testbed

@@ -1,0 +1,38 @@
+#include "testbed/technique/registry.h"
+
+#include <algorithm>
+#include <map>
+
+#include "testbed/core/error.h"
+
+namespace testbed {
+namespace {
+
+std::map<std::string, RegisteredTechnique, std::less<>>& registry() {
+  static std::map<std::string, RegisteredTechnique, std::less<>> techniques;
+  return techniques;
+}
+
+}  // namespace
+
+TechniqueRegistration::TechniqueRegistration(const TechniqueInfo& info, TechniqueFactory factory) {
+  // Two plugins with one id would make every result ambiguous: fail loudly at start-up.
+  if (!registry().emplace(info.id, RegisteredTechnique{&info, std::move(factory)}).second)
+    throw std::logic_error("technique id registered twice: " + info.id);
+}
+
+std::vector<RegisteredTechnique> registeredTechniques() {
+  std::vector<RegisteredTechnique> all;
+  for (const auto& [id, entry] : registry()) all.push_back(entry);
+  return all;
+}
+
+const RegisteredTechnique& findTechnique(std::string_view id) {
+  const auto it = registry().find(id);
+  if (it != registry().end()) return it->second;
+  std::string known;
+  for (const auto& [name, entry] : registry()) known += (known.empty() ? "" : ", ") + name;
+  throw InputError("--technique: unknown technique '" + std::string(id) + "' (known: " + known + ")");
+}
+
+}  // namespace testbed

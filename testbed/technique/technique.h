@@ -1,0 +1,67 @@
+#pragma once
+// The plugin interface every shadow technique implements (README: "Writing a technique").
+// A technique turns the frame's inputs into a screen-space visibility buffer: 1 = lit,
+// 0 = shadowed, in between for filtered techniques; receivers whose normal faces away
+// from the light are shadowed (glsl/receiver.glsl does that for every technique).
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "testbed/gl/objects.h"
+#include "testbed/gl/pass_timer.h"
+#include "testbed/render/depth_format.h"
+#include "testbed/scene/scene.h"
+#include "testbed/scene/view.h"
+#include "testbed/technique/parameters.h"
+
+namespace testbed {
+
+class GpuScene;
+class GBuffer;
+
+enum class OutputKind { Hard, Filtered };
+
+struct TechniqueInfo {
+  std::string id;        // CLI name: "sm", "smsr", "rpcf-rsmss"
+  std::string family;    // folder family: "shadow_map", "revectorization"
+  OutputKind output = OutputKind::Hard;
+  std::string citation;  // "Williams 1978"
+  std::string summary;   // one line for `testbed list`
+  std::vector<ParameterSpec> parameters;
+};
+
+struct FrameInputs {
+  const Scene& scene;
+  const GpuScene& geometry;
+  const GBuffer& gbuffer;
+  glm::ivec2 size;              // screen size in pixels
+  ViewProjection camera;
+  LightTransforms light;
+  int shadowMapSize = 1024;
+  DepthFormat depthFormat = DepthFormat::D16;
+};
+
+// Where the technique writes its visibility: an R32F texture of the screen's size with a
+// framebuffer already attached. Background pixels are masked by the harness afterwards.
+struct VisibilityTarget {
+  const Framebuffer& framebuffer;
+  const Texture& texture;
+};
+
+class ShadowTechnique {
+ public:
+  virtual ~ShadowTechnique() = default;
+  virtual const TechniqueInfo& info() const = 0;
+  // Called once with the validated parameters, before the first render.
+  virtual void configure(const ParameterSet& parameters) = 0;
+  // Renders one frame. Every GPU pass runs inside a `timer.scope("name")`. GL objects may
+  // be (re)allocated here; their bytes are booked as this technique's memory.
+  virtual void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) = 0;
+};
+
+using TechniqueFactory = std::function<std::unique_ptr<ShadowTechnique>()>;
+
+}  // namespace testbed
