@@ -71,7 +71,7 @@ build() {
   log "building $build_dir"
   # Ninja's progress lines are hidden; warnings, errors and the build's status are not.
   set +o pipefail
-  cmake --build "$build_dir" -- -j"$(nproc)" 2>&1 | grep -vE '^\[[0-9]+/[0-9]+\] |^ninja: no work'
+  cmake --build "$build_dir" -- -j"$(nproc)" 2>&1 | { grep -vE '^\[[0-9]+/[0-9]+\] |^ninja: no work' || true; }
   local status=${PIPESTATUS[0]}
   set -o pipefail
   return "$status"

@@ -85,6 +85,8 @@ class FrameRunner {
   const RenderSettings& settings() const { return settings_; }
   double gbufferMs() const { return gbufferMs_; }
   std::size_t triangleCount() const { return geometry_.triangleCount(); }
+  // G-buffer readback, top-down: xyz world position, w coverage.
+  const ImageF& positions() const { return positions_; }
 
  private:
   friend class TechniqueSession;

@@ -1,0 +1,115 @@
+// GL wrappers: the loader resolved a 4.5 core context, textures book their true size in
+// the current ledger, shaders compile from the embedded library with includes expanded.
+#include "testbed/gl/objects.h"
+
+#include <gtest/gtest.h>
+
+#include "testbed/core/error.h"
+#include "testbed/gl/pass_timer.h"
+#include "testbed/gl/shader_library.h"
+#include "tests/gl_fixture.h"
+
+namespace testbed {
+namespace {
+
+class GlObjects : public ::testing::Test {
+ protected:
+  void SetUp() override { test::sharedContext(); }
+};
+
+TEST_F(GlObjects, LoaderResolvedA45CoreContext) {
+  GLint major = 0, minor = 0, profile = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
+  EXPECT_GE(major * 10 + minor, 45);
+  EXPECT_TRUE(profile & GL_CONTEXT_CORE_PROFILE_BIT);
+  // A 4.5 entry point (direct state access) must be resolved, not null.
+  EXPECT_NE(glad_glCreateTextures, nullptr);
+  EXPECT_EQ(test::sharedContext().description().rfind("osmesa: ", 0), 0u);
+}
+
+TEST_F(GlObjects, LedgerBooksTrueSizesAndReleasesThem) {
+  GpuMemoryLedger ledger;
+  const auto before = GpuMemoryLedger::processBytes();
+  {
+    GpuMemoryLedger::Scope scope(ledger);
+    Texture d16 = Texture::create2D(GL_DEPTH_COMPONENT16, 1024, 1024);
+    EXPECT_EQ(ledger.bytes(), 2u * 1024 * 1024);
+    Texture d32 = Texture::create2D(GL_DEPTH_COMPONENT32F, 1024, 1024);
+    EXPECT_EQ(ledger.bytes(), 6u * 1024 * 1024);
+    Texture moved = std::move(d32);  // moving keeps one booking
+    EXPECT_EQ(ledger.bytes(), 6u * 1024 * 1024);
+    Texture mips = Texture::create2D(GL_R32F, 4, 4, 0);  // 16 + 4 + 1 texels
+    EXPECT_EQ(mips.levels(), 3);
+    EXPECT_EQ(mips.bytes(), 21u * 4);
+    Buffer buffer = Buffer::create(1000, nullptr);
+    EXPECT_EQ(ledger.bytes(), 6u * 1024 * 1024 + 84 + 1000);
+    EXPECT_EQ(GpuMemoryLedger::processBytes() - before, ledger.bytes());
+  }
+  EXPECT_EQ(ledger.bytes(), 0u);
+  EXPECT_EQ(GpuMemoryLedger::processBytes(), before);
+}
+
+TEST_F(GlObjects, ObjectsOutsideAScopeAreNotBooked) {
+  GpuMemoryLedger ledger;
+  Texture texture;
+  {
+    GpuMemoryLedger::Scope scope(ledger);
+  }
+  texture = Texture::create2D(GL_RGBA8, 8, 8);
+  EXPECT_EQ(ledger.bytes(), 0u);
+  EXPECT_EQ(texture.bytes(), 256u);
+}
+
+TEST_F(GlObjects, ProgramsBuildFromTheEmbeddedLibrary) {
+  const Program program =
+      Program::graphics("testbed/render/fullscreen.vert", "techniques/shadow_map/shadow_map_visibility.frag");
+  EXPECT_TRUE(program);
+  EXPECT_GE(program.location("uBias"), 0);
+  EXPECT_GE(program.location("uShadowMap"), 0);  // declared in an included file
+  EXPECT_THROW(Program::graphics("testbed/render/fullscreen.vert", "no/such/shader.frag"), GlError);
+}
+
+TEST(ShaderLibrary, ExpandsIncludesOnceEach) {
+  const std::string source = expandShaderSource("techniques/shadow_map/shadow_map_visibility.frag");
+  EXPECT_EQ(source.rfind("#version 450 core", 0), 0u);
+  EXPECT_NE(source.find("float shadowTest("), std::string::npos);
+  EXPECT_NE(source.find("bool loadReceiver("), std::string::npos);
+  EXPECT_EQ(source.find("#include"), std::string::npos);
+  // Each shared function appears exactly once.
+  const auto first = source.find("float shadowTest(");
+  EXPECT_EQ(source.find("float shadowTest(", first + 1), std::string::npos);
+}
+
+TEST(ShaderLibrary, MissingIncludeAndCyclesAreErrors) {
+  static const ShaderRegistration missing("test/missing_include.frag", "#version 450 core\n#include \"test/nowhere.glsl\"\n");
+  static const ShaderRegistration a("test/cycle_a.glsl", "#include \"test/cycle_b.glsl\"\n");
+  static const ShaderRegistration b("test/cycle_b.glsl", "#include \"test/cycle_a.glsl\"\n");
+  EXPECT_THROW(expandShaderSource("test/missing_include.frag"), GlError);
+  // A file that includes another that includes the first is an error, not a loop.
+  EXPECT_THROW(expandShaderSource("test/cycle_a.glsl"), GlError);
+}
+
+TEST_F(GlObjects, PassTimerMeasuresEachScope) {
+  PassTimer timer;
+  Texture target = Texture::create2D(GL_RGBA8, 512, 512);
+  Framebuffer fb = Framebuffer::create();
+  fb.attachColor(0, target);
+  fb.finish({0});
+  const float color[4] = {1, 0, 0, 1};
+  for (const char* name : {"clear-a", "clear-b", "clear-a"}) {
+    auto scope = timer.scope(name);
+    glClearNamedFramebufferfv(fb.id(), GL_COLOR, 0, color);
+  }
+  const PassTimes times = timer.resolve();
+  EXPECT_EQ(times.order, (std::vector<std::string>{"clear-a", "clear-b"}));
+  EXPECT_GE(times.totalMs, times.passMs.at("clear-a"));
+  EXPECT_GE(times.totalMs, 0.0);
+  // Nesting is a programming error.
+  auto outer = timer.scope("outer");
+  EXPECT_THROW(timer.scope("inner"), GlError);
+}
+
+}  // namespace
+}  // namespace testbed

@@ -1,0 +1,102 @@
+#include "testbed/technique/parameters.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "testbed/core/error.h"
+#include "testbed/technique/registry.h"
+
+namespace testbed {
+namespace {
+
+const std::vector<ParameterSpec> kSpecs = {
+    ParameterSpec::real("bias", 0.0, -1.0, 1.0, "depth bias"),
+    ParameterSpec::integer("kernel", 3, 1, 17, "kernel size"),
+    ParameterSpec::boolean("bilinear", false, "bilinear weights"),
+    ParameterSpec::choice("visibility", "conservative", {"conservative", "improved"}, "visibility"),
+};
+
+std::string errorOf(const std::map<std::string, std::string>& raw) {
+  try {
+    resolveParameters("demo", kSpecs, raw);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(Parameters, DefaultsFillEveryDeclaredName) {
+  const ParameterSet set = resolveParameters("demo", kSpecs, {});
+  EXPECT_EQ(set.getFloat("bias"), 0.0);
+  EXPECT_EQ(set.getInt("kernel"), 3);
+  EXPECT_FALSE(set.getBool("bilinear"));
+  EXPECT_EQ(set.getChoice("visibility"), "conservative");
+  EXPECT_EQ(set.values().size(), kSpecs.size());
+}
+
+TEST(Parameters, ParsesEachType) {
+  const ParameterSet set = resolveParameters(
+      "demo", kSpecs, {{"bias", "-0.25"}, {"kernel", "7"}, {"bilinear", "true"}, {"visibility", "improved"}});
+  EXPECT_EQ(set.getFloat("bias"), -0.25);
+  EXPECT_EQ(set.getInt("kernel"), 7);
+  EXPECT_TRUE(set.getBool("bilinear"));
+  EXPECT_EQ(set.getChoice("visibility"), "improved");
+  EXPECT_EQ(set.toJson()["kernel"], 7);
+}
+
+TEST(Parameters, RejectsBadValuesNamingTheAssignment) {
+  EXPECT_NE(errorOf({{"nope", "1"}}).find("--set nope=1: technique 'demo' has no parameter 'nope'"),
+            std::string::npos);
+  EXPECT_NE(errorOf({{"nope", "1"}}).find("bias, kernel, bilinear, visibility"), std::string::npos);
+  EXPECT_NE(errorOf({{"bias", "abc"}}).find("--set bias=abc: expected a number"), std::string::npos);
+  EXPECT_NE(errorOf({{"bias", "nan"}}).find("not a finite number"), std::string::npos);
+  EXPECT_NE(errorOf({{"bias", "inf"}}).find("not a finite number"), std::string::npos);
+  EXPECT_NE(errorOf({{"bias", "2"}}).find("out of range"), std::string::npos);
+  EXPECT_NE(errorOf({{"kernel", "2.5"}}).find("expected an integer"), std::string::npos);
+  EXPECT_NE(errorOf({{"kernel", "18"}}).find("out of range [1, 17]"), std::string::npos);
+  EXPECT_NE(errorOf({{"kernel", ""}}).find("expected an integer"), std::string::npos);
+  EXPECT_NE(errorOf({{"bilinear", "yes please"}}).find("expected true or false"), std::string::npos);
+  EXPECT_NE(errorOf({{"visibility", "best"}}).find("expected one of: conservative, improved"), std::string::npos);
+}
+
+TEST(Parameters, OddOnlyIntegers) {
+  std::vector<ParameterSpec> specs = {ParameterSpec::integer("kernel", 3, 1, 17, "kernel")};
+  specs[0].oddOnly = true;
+  EXPECT_EQ(resolveParameters("demo", specs, {{"kernel", "5"}}).getInt("kernel"), 5);
+  EXPECT_THROW(resolveParameters("demo", specs, {{"kernel", "4"}}), InputError);
+}
+
+TEST(Parameters, SplitAssignment) {
+  EXPECT_EQ(splitAssignment("a=b=c"), (std::pair<std::string, std::string>{"a", "b=c"}));
+  EXPECT_EQ(splitAssignment("a="), (std::pair<std::string, std::string>{"a", ""}));
+  EXPECT_THROW(splitAssignment("novalue"), InputError);
+  EXPECT_THROW(splitAssignment("=1"), InputError);
+}
+
+TEST(Registry, EveryTechniqueDeclaresValidDefaults) {
+  const auto techniques = registeredTechniques();
+  ASSERT_FALSE(techniques.empty());
+  for (const auto& t : techniques) {
+    SCOPED_TRACE(t.info->id);
+    EXPECT_FALSE(t.info->family.empty());
+    EXPECT_FALSE(t.info->citation.empty());
+    // Each default must itself pass validation when given explicitly.
+    std::map<std::string, std::string> raw;
+    for (const auto& spec : t.info->parameters) raw[spec.name] = formatValue(spec.defaultValue);
+    EXPECT_NO_THROW(resolveParameters(t.info->id, t.info->parameters, raw));
+  }
+}
+
+TEST(Registry, FindsSmAndNamesTheKnownIdsForAnUnknownOne) {
+  EXPECT_EQ(findTechnique("sm").info->id, "sm");
+  try {
+    findTechnique("no-such-technique");
+    FAIL() << "expected InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("--technique: unknown technique 'no-such-technique'"), std::string::npos);
+    EXPECT_NE(std::string(error.what()).find("sm"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace testbed

@@ -1,0 +1,179 @@
+// Image tests of the shared passes against analytic answers: a box over a plane, lit
+// straight down by a directional light (shadow = the box's square) and by a spot light
+// (shadow = the top face's square scaled by H / (H - h)). The G-buffer positions give each
+// receiver pixel's world point, so every floor pixel is checked against the exact answer
+// except those within a band of 1.5 shadow-map texels (projected onto the floor) of the
+// analytic boundary, where nearest sampling may legitimately go either way.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "testbed/app/frame_runner.h"
+#include "testbed/scene/primitives.h"
+#include "tests/gl_fixture.h"
+
+namespace testbed {
+namespace {
+
+TriMesh translated(TriMesh mesh, OpenMesh::Vec3f offset) {
+  for (auto v : mesh.vertices()) mesh.point(v) += offset;
+  mesh.update_normals();
+  return mesh;
+}
+
+Scene boxOverPlane(const LightDesc& light) {
+  Scene scene;
+  scene.name = "box-over-plane";
+  scene.camera.eye = {28, 34, -30};
+  scene.camera.target = {0, 0, 0};
+  scene.light = light;
+  scene.objects.push_back({"plane", makePlane(80, 80)});
+  // Box from y = 10 to 12, x and z in [-5, 5].
+  scene.objects.push_back({"box", translated(makeBox(10, 2, 10), {0, 11, 0})});
+  return scene;
+}
+
+struct FloorCheck {
+  int checked = 0, inShadowChecked = 0, mismatches = 0;
+};
+
+// Compares the technique's visibility on floor pixels with a `halfSide`-square shadow,
+// over the part of the floor the shadow map covers (|x|, |z| < coverHalf).
+FloorCheck checkFloor(const ImageF& visibility, const ImageF& positions, float halfSide, float coverHalf,
+                      float band) {
+  FloorCheck result;
+  for (int y = 0; y < visibility.height; ++y) {
+    for (int x = 0; x < visibility.width; ++x) {
+      if (positions.at(x, y, 3) < 0.5f || std::abs(positions.at(x, y, 1)) > 1e-3f) continue;
+      const float px = positions.at(x, y, 0), pz = positions.at(x, y, 2);
+      // Distance to the square's outline (Chebyshev suffices for an axis-aligned square).
+      const float distance = std::abs(std::max(std::abs(px), std::abs(pz)) - halfSide);
+      if (distance < band || std::max(std::abs(px), std::abs(pz)) > coverHalf - band) continue;
+      const bool expectShadow = std::abs(px) < halfSide && std::abs(pz) < halfSide;
+      const bool shadow = visibility.at(x, y) < 0.5f;
+      ++result.checked;
+      result.inShadowChecked += expectShadow;
+      result.mismatches += shadow != expectShadow;
+    }
+  }
+  return result;
+}
+
+class ShadowMapAnalytic : public ::testing::Test {
+ protected:
+  void SetUp() override { test::sharedContext(); }
+
+  TechniqueRun run(FrameRunner& runner) {
+    const auto& sm = findTechnique("sm");
+    return runner.run(sm, resolveParameters("sm", sm.info->parameters, {}));
+  }
+};
+
+TEST_F(ShadowMapAnalytic, DirectionalLightCastsTheBoxSquare) {
+  LightDesc light;
+  light.type = LightType::Directional;
+  light.direction = {0, -1, 0};
+  light.extent = 40;
+  const Scene scene = boxOverPlane(light);
+  RenderSettings settings;
+  settings.size = {640, 480};
+  settings.shadowMapSize = 512;
+  FrameRunner runner(scene, settings);
+  const TechniqueRun result = run(runner);
+  const float texel = 2 * light.extent / settings.shadowMapSize;
+  const FloorCheck check = checkFloor(result.visibility, runner.positions(), 5.0f, light.extent, 1.5f * texel);
+  EXPECT_GT(check.checked, 50000);
+  EXPECT_GT(check.inShadowChecked, 2000);
+  EXPECT_EQ(check.mismatches, 0);
+}
+
+TEST_F(ShadowMapAnalytic, SpotLightCastsTheScaledTopFace) {
+  LightDesc light;
+  light.type = LightType::Spot;
+  light.eye = {0, 40, 0};
+  light.target = {0, 0, 0};
+  light.fovDegrees = 60;
+  const Scene scene = boxOverPlane(light);
+  RenderSettings settings;
+  settings.size = {640, 480};
+  settings.shadowMapSize = 1024;
+  FrameRunner runner(scene, settings);
+  const TechniqueRun result = run(runner);
+  // The top face (y = 12) projects largest: half side 5 · 40 / 28. A texel covers
+  // 2·40·tan(30°)/1024 on the floor under the light (the map is square, the floor flat).
+  const float halfSide = 5.0f * 40.0f / 28.0f;
+  const float texel = 2 * 40.0f * std::tan(glm::radians(30.0f)) / settings.shadowMapSize;
+  const FloorCheck check = checkFloor(result.visibility, runner.positions(), halfSide,
+                                        40.0f * std::tan(glm::radians(30.0f)), 1.5f * texel);
+  EXPECT_GT(check.checked, 50000);
+  EXPECT_GT(check.inShadowChecked, 2000);
+  EXPECT_EQ(check.mismatches, 0);
+}
+
+TEST_F(ShadowMapAnalytic, OutsideTheSpotConeIsShadowed) {
+  LightDesc light;
+  light.type = LightType::Spot;
+  light.eye = {0, 40, 0};
+  light.target = {0, 0, 0};
+  light.fovDegrees = 30;  // covers |x|, |z| < 40·tan(15°) ≈ 10.7 on the floor
+  const Scene scene = boxOverPlane(light);
+  RenderSettings settings;
+  settings.size = {320, 240};
+  settings.shadowMapSize = 256;
+  FrameRunner runner(scene, settings);
+  const TechniqueRun result = run(runner);
+  const ImageF& positions = runner.positions();
+  int outside = 0;
+  for (int y = 0; y < positions.height; ++y)
+    for (int x = 0; x < positions.width; ++x) {
+      if (positions.at(x, y, 3) < 0.5f || std::abs(positions.at(x, y, 1)) > 1e-3f) continue;
+      if (std::max(std::abs(positions.at(x, y, 0)), std::abs(positions.at(x, y, 2))) < 12.0f) continue;
+      ++outside;
+      EXPECT_LT(result.visibility.at(x, y), 0.5f) << "lit outside the cone at pixel " << x << "," << y;
+    }
+  EXPECT_GT(outside, 10000);
+}
+
+TEST_F(ShadowMapAnalytic, ReceiversFacingAwayFromTheLightAreShadowed) {
+  // Light from below the floor: the floor's upper side faces away, so nothing on it is lit
+  // although no occluder lies between it and the light.
+  LightDesc light;
+  light.type = LightType::Directional;
+  light.direction = {0, 1, 0};
+  light.extent = 60;
+  Scene scene = boxOverPlane(light);
+  scene.objects.pop_back();  // plane only
+  RenderSettings settings;
+  settings.size = {160, 120};
+  settings.shadowMapSize = 256;
+  FrameRunner runner(scene, settings);
+  const TechniqueRun result = run(runner);
+  int receivers = 0;
+  for (float v : result.visibility.pixels)
+    if (!std::isnan(v)) {
+      ++receivers;
+      EXPECT_EQ(v, 0.0f);
+    }
+  EXPECT_GT(receivers, 1000);
+}
+
+TEST_F(ShadowMapAnalytic, GBufferHoldsWorldPositionsAndCoverage) {
+  LightDesc light;
+  light.type = LightType::Directional;
+  light.direction = {0, -1, 0};
+  Scene scene = boxOverPlane(light);
+  scene.camera.eye = {0, 50, -0.001f};  // straight down at the origin
+  RenderSettings settings;
+  settings.size = {101, 101};
+  FrameRunner runner(scene, settings);
+  const ImageF& positions = runner.positions();
+  // Centre pixel sees the box top (y = 12) at the origin.
+  EXPECT_NEAR(positions.at(50, 50, 0), 0.0f, 0.3f);
+  EXPECT_NEAR(positions.at(50, 50, 1), 12.0f, 1e-3f);
+  EXPECT_NEAR(positions.at(50, 50, 2), 0.0f, 0.3f);
+  // The 80×80 plane fills the view (50·tan(22.5°) ≈ 20.7 < 40): full coverage.
+  for (int i = 0; i < positions.width * positions.height; ++i) ASSERT_EQ(positions.pixels[i * 4 + 3], 1.0f);
+}
+
+}  // namespace
+}  // namespace testbed
