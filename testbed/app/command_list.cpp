@@ -25,10 +25,16 @@ nlohmann::json specJson(const ParameterSpec& spec) {
 CommandRunner addListCommand(CLI::App& app) {
   auto* command = app.add_subcommand("list", "list the techniques and their parameters");
   auto json = std::make_shared<bool>(false);
+  auto markdown = std::make_shared<bool>(false);
   command->add_flag("--json", *json, "print JSON");
-  return [command, json]() {
+  command->add_flag("--markdown", *markdown, "print the README's technique table");
+  return [command, json, markdown]() {
     if (!command->parsed()) return -1;
     const auto techniques = registeredTechniques();
+    if (*markdown) {
+      std::cout << techniqueTableMarkdown();
+      return 0;
+    }
     if (*json) {
       nlohmann::json all = nlohmann::json::array();
       for (const auto& t : techniques) {

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "testbed/core/error.h"
+#include "testbed/technique/parameters.h"
 
 namespace testbed {
 namespace {
@@ -33,6 +34,19 @@ const RegisteredTechnique& findTechnique(std::string_view id) {
   std::string known;
   for (const auto& [name, entry] : registry()) known += (known.empty() ? "" : ", ") + name;
   throw InputError("--technique: unknown technique '" + std::string(id) + "' (known: " + known + ")");
+}
+
+std::string techniqueTableMarkdown() {
+  std::string table = "| id | family | output | parameters (default) | citation |\n|---|---|---|---|---|\n";
+  for (const auto& t : registeredTechniques()) {
+    std::string parameters;
+    for (const auto& spec : t.info->parameters)
+      parameters += (parameters.empty() ? "" : ", ") + ("`" + spec.name + "=" + formatValue(spec.defaultValue) + "`");
+    table += "| `" + t.info->id + "` | " + t.info->family + " | " +
+             (t.info->output == OutputKind::Hard ? "hard" : "filtered") + " | " + parameters + " | " +
+             t.info->citation + " |\n";
+  }
+  return table;
 }
 
 }  // namespace testbed

@@ -20,6 +20,10 @@ std::vector<RegisteredTechnique> registeredTechniques();
 // Throws InputError naming the known ids when `id` is unknown.
 const RegisteredTechnique& findTechnique(std::string_view id);
 
+// The README's technique table, generated from the registry (tests/readme_test.cpp keeps
+// the README equal to it).
+std::string techniqueTableMarkdown();
+
 struct TechniqueRegistration {
   TechniqueRegistration(const TechniqueInfo& info, TechniqueFactory factory);
 };

@@ -1,0 +1,23 @@
+// The README documents what the code does: its technique table is the registry's.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "testbed/technique/registry.h"
+
+namespace testbed {
+namespace {
+
+TEST(Readme, TechniqueTableMatchesTheRegistry) {
+  std::ifstream file(std::string(TESTBED_SOURCE_DIR) + "/README.md");
+  ASSERT_TRUE(file) << "README.md not found";
+  std::stringstream text;
+  text << file.rdbuf();
+  EXPECT_NE(text.str().find(techniqueTableMarkdown()), std::string::npos)
+      << "README.md's technique table is stale; regenerate it with `testbed list --markdown`:\n"
+      << techniqueTableMarkdown();
+}
+
+}  // namespace
+}  // namespace testbed
