@@ -73,10 +73,11 @@ ImageF readImage(const std::filesystem::path& file) {
 OutputFiles::~OutputFiles() {
   std::error_code ignored;
   for (const auto& partial : staged_) std::filesystem::remove(partial, ignored);
+  if (createdDirectory_ && std::filesystem::is_empty(directory_, ignored)) std::filesystem::remove(directory_, ignored);
 }
 
 std::filesystem::path OutputFiles::stage(const std::string& name) {
-  std::filesystem::create_directories(directory_);
+  if (!std::filesystem::exists(directory_)) createdDirectory_ = std::filesystem::create_directories(directory_);
   auto partial = directory_ / (name + ".partial");
   staged_.push_back(partial);
   return partial;
@@ -101,6 +102,7 @@ void OutputFiles::commit() {
     std::filesystem::rename(partial, final);
   }
   staged_.clear();
+  createdDirectory_ = false;
 }
 
 }  // namespace testbed

@@ -21,7 +21,7 @@ ImageF readImage(const std::filesystem::path& file);
 
 // Collects the files of one command and commits them together: each write goes to
 // "<name>.partial", commit() renames them all; the destructor of an uncommitted set
-// removes the partial files.
+// removes the partial files, and the directory too if this set created it.
 class OutputFiles {
  public:
   explicit OutputFiles(std::filesystem::path directory) : directory_(std::move(directory)) {}
@@ -38,6 +38,7 @@ class OutputFiles {
   std::filesystem::path stage(const std::string& name);
   std::filesystem::path directory_;
   std::vector<std::filesystem::path> staged_;
+  bool createdDirectory_ = false;
 };
 
 }  // namespace testbed
