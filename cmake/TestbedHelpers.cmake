@@ -36,8 +36,9 @@ function(testbed_add_technique name)
   set_property(GLOBAL APPEND PROPERTY TESTBED_TECHNIQUE_TARGETS ${target})
 endfunction()
 
-# testbed_link_techniques(<executable>): links the core and every registered technique.
+# testbed_link_techniques(<executable>): links the core, the ground truth and every
+# registered technique.
 function(testbed_link_techniques exe)
   get_property(targets GLOBAL PROPERTY TESTBED_TECHNIQUE_TARGETS)
-  target_link_libraries(${exe} PRIVATE testbed_core ${targets})
+  target_link_libraries(${exe} PRIVATE testbed_core testbed_groundtruth ${targets})
 endfunction()

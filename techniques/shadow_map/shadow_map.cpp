@@ -1,5 +1,6 @@
 // `sm`: plain shadow mapping (Williams 1978) — one binary depth test per pixel against
 // the nearest-filtered map. The baseline every ratio in the reports is taken against.
+#include "testbed/render/receiver_inputs.h"
 #include "testbed/render/screen_pass.h"
 #include "testbed/render/shadow_map_pass.h"
 #include "testbed/technique/registry.h"
@@ -38,7 +39,8 @@ class PlainShadowMap final : public ShadowTechnique {
                                    "techniques/shadow_map/shadow_map_visibility.frag");
     shadowMap_.render(in, timer);
     auto scope = timer.scope("visibility");
-    bindReceiverInputs(program_, in, shadowMap_.depth());
+    bindReceiverInputs(program_, in);
+    bindShadowMap(program_, shadowMap_.depth());
     program_.set("uBias", bias_);
     screen_.draw(program_, out.framebuffer, in.size);
   }

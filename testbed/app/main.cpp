@@ -11,7 +11,21 @@ int main(int argc, char** argv) {
   CLI::App app{"shadow testbed: shadow-mapping techniques measured against exact ground truth"};
   app.require_subcommand(1);
   const std::vector<testbed::CommandRunner> commands = {testbed::addListCommand(app),
-                                                        testbed::addRenderCommand(app)};
+                                                        testbed::addRenderCommand(app),
+                                                        testbed::addGroundTruthCommand(app)};
+  // CLI11 would only say "a subcommand is required" for a mistyped one: name it instead.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string known;
+    bool found = false;
+    for (const auto* sub : app.get_subcommands({})) {
+      known += (known.empty() ? "" : ", ") + sub->get_name();
+      found = found || sub->get_name() == argv[1];
+    }
+    if (!found) {
+      std::cerr << "testbed: unknown command '" << argv[1] << "' (commands: " << known << ")\n";
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {

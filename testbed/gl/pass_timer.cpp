@@ -1,7 +1,5 @@
 #include "testbed/gl/pass_timer.h"
 
-#include <algorithm>
-
 #include "testbed/core/error.h"
 
 namespace testbed {
@@ -22,30 +20,28 @@ GLuint PassTimer::takeQuery() {
 PassTimer::Scope::Scope(PassTimer& timer, std::string name) : timer_(timer) {
   if (timer.open_) throw GlError("PassTimer: scope '" + name + "' opened inside another scope");
   timer.open_ = true;
-  Entry entry{std::move(name), timer.takeQuery(), timer.takeQuery()};
-  glQueryCounter(entry.begin, GL_TIMESTAMP);
+  Entry entry{std::move(name), timer.takeQuery()};
+  glFinish();
+  glBeginQuery(GL_TIME_ELAPSED, entry.query);
   timer.entries_.push_back(std::move(entry));
 }
 
 PassTimer::Scope::~Scope() {
-  glQueryCounter(timer_.entries_.back().end, GL_TIMESTAMP);
+  glEndQuery(GL_TIME_ELAPSED);
+  glFinish();
   timer_.open_ = false;
 }
 
 PassTimes PassTimer::resolve() {
   PassTimes times;
-  GLuint64 first = ~GLuint64(0), last = 0;
   for (const Entry& entry : entries_) {
-    GLuint64 begin = 0, end = 0;
-    glGetQueryObjectui64v(entry.begin, GL_QUERY_RESULT, &begin);
-    glGetQueryObjectui64v(entry.end, GL_QUERY_RESULT, &end);
-    const double ms = end > begin ? double(end - begin) * 1e-6 : 0.0;
+    GLuint64 nanoseconds = 0;
+    glGetQueryObjectui64v(entry.query, GL_QUERY_RESULT, &nanoseconds);
+    const double ms = double(nanoseconds) * 1e-6;
     if (!times.passMs.count(entry.name)) times.order.push_back(entry.name);
     times.passMs[entry.name] += ms;
-    first = std::min(first, begin);
-    last = std::max(last, end);
+    times.totalMs += ms;
   }
-  times.totalMs = last > first ? double(last - first) * 1e-6 : 0.0;
   entries_.clear();
   used_ = 0;
   return times;

@@ -1,7 +1,11 @@
 #pragma once
-// GPU time per named pass from GL timestamp queries. Scopes may repeat a name (the times
-// add up) and may not nest. The frame total runs from the first scope's start to the last
-// scope's end, so work between passes counts too.
+// GPU time per named pass from GL_TIME_ELAPSED queries. Scopes may repeat a name (the
+// times add up) and may not nest. The frame total is the sum of the passes.
+//
+// Each scope is bracketed by glFinish: the queue is empty when a pass starts and drained
+// when it ends, so its query holds that pass's work alone. Without it a deferring
+// rasterizer (llvmpipe bins a framebuffer's work until a flush or a readback) charges one
+// pass's work to another. The bubbles this adds lie outside every timed pass.
 #include <map>
 #include <string>
 #include <vector>
@@ -41,7 +45,7 @@ class PassTimer {
  private:
   struct Entry {
     std::string name;
-    GLuint begin = 0, end = 0;
+    GLuint query = 0;
   };
   GLuint takeQuery();
   std::vector<Entry> entries_;

@@ -96,11 +96,36 @@ void OutputFiles::writeText(const std::string& name, const std::string& text) {
 }
 
 void OutputFiles::commit() {
-  for (const auto& partial : staged_) {
-    auto final = partial;
-    final.replace_extension();  // drops ".partial"
-    std::filesystem::rename(partial, final);
+  // Two phases so the set lands whole or not at all: earlier files of the same names are
+  // moved aside first, and put back if any rename fails.
+  namespace fs = std::filesystem;
+  std::vector<std::pair<fs::path, fs::path>> movedAside, placed;  // (from, to)
+  auto finalOf = [](fs::path partial) { return partial.replace_extension(); };
+  for (const auto& partial : staged_)
+    if (fs::is_directory(finalOf(partial)))
+      throw std::runtime_error(finalOf(partial).string() + ": a folder is in the way of the output file");
+  try {
+    for (const auto& partial : staged_) {
+      const fs::path final = finalOf(partial);
+      if (fs::exists(fs::symlink_status(final))) {
+        fs::path aside = final;
+        aside += ".previous";
+        fs::rename(final, aside);
+        movedAside.emplace_back(aside, final);
+      }
+    }
+    for (const auto& partial : staged_) {
+      fs::rename(partial, finalOf(partial));
+      placed.emplace_back(partial, finalOf(partial));
+    }
+  } catch (...) {
+    std::error_code ignored;
+    for (const auto& [partial, final] : placed) fs::rename(final, partial, ignored);
+    for (const auto& [aside, final] : movedAside) fs::rename(aside, final, ignored);
+    throw;
   }
+  std::error_code ignored;
+  for (const auto& [aside, final] : movedAside) fs::remove(aside, ignored);
   staged_.clear();
   createdDirectory_ = false;
 }

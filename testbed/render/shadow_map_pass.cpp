@@ -1,7 +1,6 @@
 #include "testbed/render/shadow_map_pass.h"
 
 #include "testbed/core/error.h"
-#include "testbed/render/gbuffer_pass.h"
 #include "testbed/technique/technique.h"
 
 namespace testbed {
@@ -73,17 +72,9 @@ void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
-void bindReceiverInputs(const Program& program, const FrameInputs& in, const Texture& shadowMap) {
-  glBindTextureUnit(0, in.gbuffer.position().id());
-  glBindTextureUnit(1, in.gbuffer.normal().id());
+void bindShadowMap(const Program& program, const Texture& shadowMap) {
   glBindTextureUnit(2, shadowMap.id());
-  program.set("uGPosition", 0);
-  program.set("uGNormal", 1);
   program.set("uShadowMap", 2);
-  program.set("uLightViewProjection", in.light.viewProjection());
-  program.set("uLightPosition", in.light.position);
-  program.set("uLightDirection", in.light.direction);
-  program.set("uLightOrthographic", in.light.orthographic ? 1 : 0);
   program.set("uShadowMapSize", glm::ivec2(shadowMap.width(), shadowMap.height()));
 }
 

@@ -34,8 +34,7 @@ class ShadowMapPass {
   Program program_;
 };
 
-// Uniforms and bindings of glsl/receiver.glsl and glsl/shadow_test.glsl for a screen pass:
-// G-buffer on units 0 and 1, the shadow map on unit 2.
-void bindReceiverInputs(const Program& program, const FrameInputs& in, const Texture& shadowMap);
+// Uniforms and binding of glsl/shadow_test.glsl: the shadow map on texture unit 2.
+void bindShadowMap(const Program& program, const Texture& shadowMap);
 
 }  // namespace testbed

@@ -1,0 +1,10 @@
+#version 450 core
+// Volume triangles, some corners at infinity (w = 0); depth clamp keeps them unclipped.
+layout(location = 0) in vec4 inPosition;
+layout(location = 1) in vec4 inPlane;
+uniform mat4 uViewProjection;
+flat out vec4 vPlane;
+void main() {
+  vPlane = inPlane;
+  gl_Position = uViewProjection * inPosition;
+}

@@ -1,0 +1,58 @@
+// `testbed groundtruth`: the exact visibility of a scene → groundtruth.{png,exr,json}, and
+// with --area-samples N the area-light reference → area.{png,exr,json}.
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "groundtruth/shadow_volumes.h"
+#include "testbed/app/commands.h"
+#include "testbed/core/error.h"
+#include "testbed/gl/context.h"
+
+namespace testbed {
+
+CommandRunner addGroundTruthCommand(CLI::App& app) {
+  struct Options {
+    CommonOptions common;
+    std::string scene, method = "volumes";
+    int areaSamples = 0;
+  };
+  auto options = std::make_shared<Options>();
+  auto* command = app.add_subcommand("groundtruth", "render the exact (and area-light) reference");
+  command->add_option("--scene", options->scene, "scene file (JSON)")->required();
+  command->add_option("--method", options->method, "volumes (stencil shadow volumes)")->capture_default_str();
+  command->add_option("--area-samples", options->areaSamples, "also render the area-light reference with N samples");
+  options->common.addTo(*command);
+
+  return [command, options]() {
+    if (!command->parsed()) return -1;
+    const RenderSettings settings = options->common.settings();
+    if (options->method != "volumes")
+      throw InputError("--method: unknown method '" + options->method + "' (available: volumes)");
+    std::vector<std::pair<const RegisteredTechnique*, ParameterSet>> runs;
+    runs.emplace_back(&shadowVolumeGroundTruth(), resolveParameters("groundtruth", {}, {}));
+    if (options->areaSamples != 0) {
+      const auto& area = areaLightReference();
+      runs.emplace_back(&area, resolveParameters("area", area.info->parameters,
+                                                 {{"area_samples", std::to_string(options->areaSamples)}}));
+    }
+    const Scene scene = loadScene(options->scene);
+    auto context = createContext(options->common.backend);
+    validateSettings(settings);
+    FrameRunner runner(scene, settings);
+    OutputFiles files(options->common.out);
+    for (const auto& [technique, parameters] : runs) {
+      const std::string& id = technique->info->id;
+      std::cerr << "testbed: " << id << " on " << scene.name << "\n";
+      const TechniqueRun run = runner.run(*technique, parameters);
+      files.writeImage(id + ".png", runner.shade(run.visibility));
+      files.writeImage(id + ".exr", run.visibility);
+      files.writeText(id + ".json", makeRecord(run, runner, context->description()).dump(2) + "\n");
+    }
+    files.commit();
+    std::cerr << "testbed: wrote to " << options->common.out << "\n";
+    return 0;
+  };
+}
+
+}  // namespace testbed

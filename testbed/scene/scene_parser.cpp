@@ -1,0 +1,507 @@
+// Scene files are hand-written, so every mistake is reported as one line naming the file
+// and the JSON key path ("scenes/x.json: objects[1].scale: must be > 0, got -2"), and no
+// partially valid scene is ever returned.
+#include <OpenMesh/Core/IO/MeshIO.hh>  // must precede the mesh type header
+#include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include "testbed/core/error.h"
+#include "testbed/scene/primitives.h"
+#include "testbed/scene/scene.h"
+
+namespace testbed {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using Names = std::vector<std::string>;
+
+// Guards against absurd subdivide/segments values before any memory is spent on them.
+constexpr std::uint64_t kMaxSceneTriangles = 20'000'000;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// A value for "got ...": one short line whatever the input holds.
+std::string show(const json& value) {
+  std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);
+  if (text.size() > 40) text = text.substr(0, 37) + "...";
+  return text;
+}
+
+std::string show(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+std::string join(const Names& names) {
+  std::string text;
+  for (const auto& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+// The JSON key path of a value: "objects[2].mesh", "camera.eye[1]".
+struct Key {
+  std::string path;
+  Key operator/(const std::string& name) const {
+    const bool plain = !name.empty() && std::all_of(name.begin(), name.end(), [](unsigned char c) {
+      return std::isalnum(c) || c == '_' || c == '-';
+    });
+    if (!plain) return {path + "[" + show(json(name)) + "]"};  // keeps odd keys on one line
+    return {path.empty() ? name : path + "." + name};
+  }
+  Key operator[](std::size_t index) const { return {path + "[" + std::to_string(index) + "]"}; }
+};
+
+class Parser {
+ public:
+  explicit Parser(const fs::path& file) : file_(file) {}
+
+  Scene scene(const json& document) const {
+    const Key top;
+    if (!document.is_object())
+      fail(top, "expected a JSON object at the top level, got " + show(document));
+    checkKeys(document, top, {"name", "camera", "light", "objects"});
+    Scene scene;
+    scene.file = file_;
+    scene.name = file_.stem().string();
+    if (const json* name = find(document, "name")) {
+      if (!name->is_string() || name->get<std::string>().empty()) {
+        fail(top / "name", "expected a non-empty string, got " + show(*name));
+      }
+      scene.name = name->get<std::string>();
+    }
+    scene.camera = camera(require(document, top, "camera"), top / "camera");
+    scene.light = light(require(document, top, "light"), top / "light");
+    const json& objects = require(document, top, "objects");
+    if (!objects.is_array() || objects.empty()) {
+      fail(top / "objects", "expected a non-empty array of objects, got " + show(objects));
+    }
+    std::uint64_t triangles = 0;
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      scene.objects.push_back(sceneObject(objects[i], (top / "objects")[i], triangles));
+    }
+    return scene;
+  }
+
+  [[noreturn]] void fail(const Key& key, const std::string& problem) const {
+    throw InputError(file_.string() + ": " + (key.path.empty() ? "" : key.path + ": ") + problem);
+  }
+
+ private:
+  // Unknown keys are errors, never warnings: a typo must not silently fall back to a default.
+  void checkKeys(const json& object, const Key& key, Names allowed) const {
+    allowed.push_back("comment");
+    for (const auto& [name, value] : object.items()) {
+      if (std::find(allowed.begin(), allowed.end(), name) == allowed.end()) {
+        fail(key / name, "unknown key (allowed here: " + join(allowed) + ")");
+      }
+      if (name == "comment" && !value.is_string()) {
+        fail(key / name, "expected a string, got " + show(value));
+      }
+    }
+  }
+
+  void requireObject(const json& value, const Key& key) const {
+    if (!value.is_object()) fail(key, "expected a JSON object {...}, got " + show(value));
+  }
+
+  static const json* find(const json& object, const char* name) {
+    const auto it = object.find(name);
+    return it == object.end() ? nullptr : &*it;
+  }
+
+  const json& require(const json& object, const Key& key, const char* name) const {
+    const json* value = find(object, name);
+    if (!value) fail(key / name, "missing required key");
+    return *value;
+  }
+
+  double number(const json& value, const Key& key) const {
+    if (!value.is_number()) fail(key, "expected a number, got " + show(value));
+    const double x = value.get<double>();
+    if (!std::isfinite(x)) fail(key, "not a finite number");
+    // Everything ends up in floats; 1e300 would silently become infinity there.
+    if (std::abs(x) > std::numeric_limits<float>::max()) fail(key, "too large, got " + show(value));
+    return x;
+  }
+
+  // Range checks run on the float that is kept, so that 1e-50 cannot pass as "> 0".
+  float positive(const json& value, const Key& key) const {
+    const float x = float(number(value, key));
+    if (!(x > 0)) fail(key, "must be > 0, got " + show(value));
+    return x;
+  }
+
+  // Within [lo, hi) (or (lo, hi) when loOpen); hi may be infinite.
+  float bounded(const json& value, const Key& key, double lo, double hi, bool loOpen) const {
+    const float x = float(number(value, key));
+    if ((loOpen ? x <= lo : x < lo) || !(x < hi)) {
+      const std::string upper = std::isinf(hi) ? "" : " and < " + show(hi);
+      fail(key, "must be " + std::string(loOpen ? "> " : ">= ") + show(lo) + upper + ", got " +
+                    show(value));
+    }
+    return x;
+  }
+
+  float optional(const json& object, const Key& key, const char* name, double fallback, double lo,
+                 double hi, bool loOpen = true) const {
+    const json* value = find(object, name);
+    return value ? bounded(*value, key / name, lo, hi, loOpen) : float(fallback);
+  }
+
+  int integer(const json& value, const Key& key, int lo, int hi) const {
+    const std::string range =
+        "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    const double x = number(value, key);
+    if (x != std::floor(x)) fail(key, "expected " + range + ", got " + show(value));
+    if (x < lo || x > hi) fail(key, "must be " + range + ", got " + show(value));
+    return int(x);
+  }
+
+  int optionalInteger(const json& object, const Key& key, const char* name, int fallback, int lo,
+                      int hi) const {
+    const json* value = find(object, name);
+    return value ? integer(*value, key / name, lo, hi) : fallback;
+  }
+
+  glm::vec3 vec3(const json& value, const Key& key) const {
+    if (!value.is_array() || value.size() != 3) fail(key, "expected [x, y, z], got " + show(value));
+    glm::vec3 v;
+    for (int i = 0; i < 3; ++i) v[i] = float(number(value[i], key[i]));
+    return v;
+  }
+
+  // A fixed-length list of positive sizes, e.g. a plane's [x, z].
+  std::vector<float> sizes(const json& value, const Key& key, std::size_t n,
+                           const char* form) const {
+    if (!value.is_array() || value.size() != n)
+      fail(key, std::string("expected ") + form + ", got " + show(value));
+    std::vector<float> out;
+    for (std::size_t i = 0; i < n; ++i) out.push_back(positive(value[i], key[i]));
+    return out;
+  }
+
+  void nearFar(const json& object, const Key& key, float& nearPlane, float& farPlane) const {
+    nearPlane = optional(object, key, "near", 1.0, 0.0, kInf);
+    farPlane = optional(object, key, "far", 1000.0, 0.0, kInf);
+    if (!(farPlane > nearPlane)) {
+      fail(key / "far",
+           "must be greater than near (" + show(nearPlane) + "), got " + show(farPlane));
+    }
+  }
+
+  CameraDesc camera(const json& value, const Key& key) const {
+    requireObject(value, key);
+    checkKeys(value, key, {"eye", "target", "up", "fov_y", "near", "far"});
+    CameraDesc camera;
+    camera.eye = vec3(require(value, key, "eye"), key / "eye");
+    camera.target = vec3(require(value, key, "target"), key / "target");
+    if (const json* up = find(value, "up")) camera.up = vec3(*up, key / "up");
+    camera.fovYDegrees = optional(value, key, "fov_y", 45.0, 0.0, 180.0);
+    nearFar(value, key, camera.nearPlane, camera.farPlane);
+    const glm::vec3 view = camera.target - camera.eye;
+    if (glm::length(view) == 0.0f) fail(key / "target", "must differ from camera.eye");
+    const float upLength = glm::length(camera.up);
+    if (upLength == 0.0f ||
+        glm::length(glm::cross(camera.up / upLength, glm::normalize(view))) < 1e-4f) {
+      fail(key / "up", "must be non-zero and not parallel to the view direction");
+    }
+    return camera;
+  }
+
+  LightDesc light(const json& value, const Key& key) const {
+    requireObject(value, key);
+    LightDesc light;
+    const json& type = require(value, key, "type");
+    if (type == "spot") {
+      checkKeys(value, key, {"type", "eye", "target", "fov", "near", "far", "radius"});
+      light.type = LightType::Spot;
+      light.eye = vec3(require(value, key, "eye"), key / "eye");
+      light.target = vec3(require(value, key, "target"), key / "target");
+      if (light.eye == light.target) fail(key / "target", "must differ from light.eye");
+      light.fovDegrees = optional(value, key, "fov", 45.0, 0.0, 180.0);
+      nearFar(value, key, light.nearPlane, light.farPlane);
+    } else if (type == "directional") {
+      checkKeys(value, key, {"type", "direction", "target", "extent", "radius"});
+      light.type = LightType::Directional;
+      const glm::vec3 direction = vec3(require(value, key, "direction"), key / "direction");
+      if (glm::length(direction) == 0.0f) fail(key / "direction", "must be a non-zero vector");
+      light.direction = glm::normalize(direction);
+      light.target = glm::vec3(0.0f);
+      if (const json* target = find(value, "target")) light.target = vec3(*target, key / "target");
+      light.extent = positive(require(value, key, "extent"), key / "extent");
+    } else {
+      fail(key / "type", "expected \"spot\" or \"directional\", got " + show(type));
+    }
+    light.radius = optional(value, key, "radius", 0.0, 0.0, kInf, false);
+    return light;
+  }
+
+  fs::path resolveMesh(const std::string& name, const Key& key) const {
+    if (name.empty()) fail(key, "expected a mesh name or file path, got \"\"");
+    const fs::path asPath(name);
+    std::string assetLooked;
+    std::error_code ec;
+    if (name.find('/') == std::string::npos && !asPath.has_extension()) {
+      const fs::path base = assetDirectory() / name;
+      for (const char* ext : {".off", ".obj", ".ply", ".stl"}) {
+        fs::path candidate = base;
+        candidate += ext;
+        if (fs::is_regular_file(candidate, ec)) return candidate;
+      }
+      assetLooked = base.string() + ".{off,obj,ply,stl} and ";
+    }
+    const fs::path local = asPath.is_absolute() ? asPath : file_.parent_path() / asPath;
+    if (fs::exists(local, ec)) return local;
+    fail(key, "mesh \"" + name + "\" not found (looked for " + assetLooked + local.string() + ")");
+  }
+
+  TriMesh primitive(const json& value, const Key& key, const std::string& kind, int subdivide,
+                    std::uint64_t& triangles) const {
+    Names keys = {"primitive", "scale", "rotate", "translate", "subdivide"};
+    auto own = [&](const Names& extra) {
+      keys.insert(keys.end(), extra.begin(), extra.end());
+      checkKeys(value, key, keys);
+    };
+    auto budget = [&](std::uint64_t count) { addTriangles(triangles, count, subdivide, key); };
+    auto req = [&](const char* name) { return positive(require(value, key, name), key / name); };
+    auto segments = [&](const char* name, int fallback, int lo) {
+      return optionalInteger(value, key, name, fallback, lo, 1024);
+    };
+    if (kind == "plane") {
+      own({"size", "segments"});
+      const auto size = sizes(require(value, key, "size"), key / "size", 2, "[x, z]");
+      const int n = segments("segments", 1, 1);
+      budget(2ull * n * n);
+      return makePlane(size[0], size[1], n);
+    }
+    if (kind == "box") {
+      own({"size"});
+      const auto size = sizes(require(value, key, "size"), key / "size", 3, "[x, y, z]");
+      budget(12);
+      return makeBox(size[0], size[1], size[2]);
+    }
+    if (kind == "sphere") {
+      own({"radius", "segments", "rings"});
+      const float radius = req("radius");
+      const int n = segments("segments", 32, 3), rings = segments("rings", 16, 2);
+      budget(2ull * n * (rings - 1));
+      return makeSphere(radius, n, rings);
+    }
+    if (kind == "cylinder") {
+      own({"radius", "height", "segments"});
+      const float radius = req("radius"), height = req("height");
+      const int n = segments("segments", 32, 3);
+      budget(4ull * n);
+      return makeCylinder(radius, height, n);
+    }
+    if (kind == "torus") {
+      own({"major", "minor", "segments", "tube_segments"});
+      const float major = req("major"), minor = req("minor");
+      if (!(minor < major))
+        fail(key / "minor", "must be smaller than major (" + show(major) + "), got " + show(minor));
+      const int n = segments("segments", 48, 3), tube = segments("tube_segments", 16, 3);
+      budget(2ull * n * tube);
+      return makeTorus(major, minor, n, tube);
+    }
+    if (kind == "fence") {
+      own({"width", "height", "bars", "bar_width", "bar_depth", "rails"});
+      const float width = req("width"), height = req("height");
+      const int bars = integer(require(value, key, "bars"), key / "bars", 1, 1024);
+      const float barWidth = req("bar_width"), barDepth = req("bar_depth");
+      const int rails = optionalInteger(value, key, "rails", 2, 0, 64);
+      budget(12ull * (bars + rails));
+      return makeFence(width, height, bars, barWidth, barDepth, rails);
+    }
+    fail(key / "primitive", "unknown primitive " + show(json(kind)) +
+                                " (expected plane, box, sphere, cylinder, torus or fence)");
+  }
+
+  void addTriangles(std::uint64_t& triangles, std::uint64_t count, int subdivide,
+                    const Key& key) const {
+    triangles += count << (2 * subdivide);  // each Loop level quadruples the triangles
+    if (triangles > kMaxSceneTriangles) {
+      fail(key, "the scene would have " + std::to_string(triangles) +
+                    " triangles, more than the limit of " + std::to_string(kMaxSceneTriangles) +
+                    " (lower subdivide or segments)");
+    }
+  }
+
+  SceneObject sceneObject(const json& value, const Key& key, std::uint64_t& triangles) const {
+    requireObject(value, key);
+    const json* meshName = find(value, "mesh");
+    const json* kind = find(value, "primitive");
+    if (meshName && kind) fail(key, "has both \"mesh\" and \"primitive\"; give exactly one");
+    if (!meshName && !kind) fail(key, "needs either \"mesh\" or \"primitive\"");
+    const json* source = meshName ? meshName : kind;
+    const Key sourceKey = key / (meshName ? "mesh" : "primitive");
+    if (!source->is_string()) fail(sourceKey, "expected a string, got " + show(*source));
+    const std::string name = source->get<std::string>();
+    // Validate the keys first so that a typo is reported before a slow mesh load.
+    if (meshName)
+      checkKeys(value, key, {"mesh", "fit", "scale", "rotate", "translate", "subdivide"});
+    const int subdivide = optionalInteger(value, key, "subdivide", 0, 0, 4);
+
+    SceneObject object;
+    object.label = key.path + (meshName ? " (mesh " : " (primitive ") + name + ")";
+    if (meshName) {
+      const fs::path path = resolveMesh(name, sourceKey);
+      try {
+        object.mesh = readMeshFile(path);
+      } catch (const InputError& e) {
+        fail(sourceKey, e.what());
+      }
+      addTriangles(triangles, object.mesh.n_faces(), subdivide, key);
+    } else {
+      object.mesh = primitive(value, key, name, subdivide, triangles);
+    }
+    if (subdivide > 0) {
+      OpenMesh::Subdivider::Uniform::LoopT<TriMesh> loop;
+      loop.attach(object.mesh);
+      loop(static_cast<std::size_t>(subdivide));
+      loop.detach();
+    }
+    transform(value, key, object.mesh);
+    return object;
+  }
+
+  // fit, then scale, rotate (X, then Y, then Z) and translate.
+  void transform(const json& value, const Key& key, TriMesh& mesh) const {
+    glm::mat4 model(1.0f);
+    if (const json* fit = find(value, "fit")) {
+      const float target = positive(*fit, key / "fit");
+      glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+      for (const auto v : mesh.vertices()) {
+        const auto& p = mesh.point(v);
+        lo = glm::min(lo, glm::vec3(p[0], p[1], p[2]));
+        hi = glm::max(hi, glm::vec3(p[0], p[1], p[2]));
+      }
+      const glm::vec3 extent = hi - lo;
+      const float largest = std::max({extent.x, extent.y, extent.z});
+      if (!(largest > 0)) fail(key / "fit", "the mesh has zero size");
+      model = glm::scale(glm::mat4(1.0f), glm::vec3(target / largest)) *
+              glm::translate(glm::mat4(1.0f), -(lo + hi) * 0.5f);
+    }
+    glm::vec3 scale(1.0f);
+    if (const json* s = find(value, "scale")) {
+      const Key sk = key / "scale";
+      if (s->is_number()) {
+        scale = glm::vec3(positive(*s, sk));
+      } else if (s->is_array() && s->size() == 3) {
+        for (int i = 0; i < 3; ++i) scale[i] = positive((*s)[i], sk[i]);
+      } else {
+        fail(sk, "expected a positive number or [x, y, z], got " + show(*s));
+      }
+    }
+    glm::vec3 degrees(0.0f), offset(0.0f);
+    if (const json* r = find(value, "rotate")) degrees = vec3(*r, key / "rotate");
+    if (const json* t = find(value, "translate")) offset = vec3(*t, key / "translate");
+    const glm::vec3 radians = glm::radians(degrees);
+    const glm::mat4 rotation = glm::rotate(glm::mat4(1.0f), radians.z, {0, 0, 1}) *
+                               glm::rotate(glm::mat4(1.0f), radians.y, {0, 1, 0}) *
+                               glm::rotate(glm::mat4(1.0f), radians.x, {1, 0, 0});
+    model = glm::translate(glm::mat4(1.0f), offset) * rotation *
+            glm::scale(glm::mat4(1.0f), scale) * model;
+
+    for (const auto v : mesh.vertices()) {
+      const auto& p = mesh.point(v);
+      const glm::vec4 q = model * glm::vec4(p[0], p[1], p[2], 1.0f);
+      if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z)) {
+        fail(key, "transformed coordinates are not finite (scale or translate too large?)");
+      }
+      mesh.set_point(v, {q.x, q.y, q.z});
+    }
+    // Recomputing from the moved points handles non-uniform scale without an inverse transpose.
+    mesh.update_normals();
+  }
+
+  fs::path file_;
+};
+
+}  // namespace
+
+fs::path assetDirectory() {
+  if (const char* dir = std::getenv("TESTBED_ASSET_DIR"); dir && *dir) return dir;
+#ifdef TESTBED_DEFAULT_ASSET_DIR
+  return TESTBED_DEFAULT_ASSET_DIR;
+#else
+  return "assets";
+#endif
+}
+
+Scene parseScene(const json& document, const fs::path& file) {
+  return Parser(file).scene(document);
+}
+
+Scene loadScene(const fs::path& file) {
+  std::error_code ec;
+  if (fs::is_directory(file, ec))
+    throw InputError(file.string() + ": is a folder, not a scene file");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file.string() + ": cannot open scene file");
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (in.bad()) throw InputError(file.string() + ": cannot read scene file");
+
+  // nlohmann refuses a number that overflows a double (1e999) while parsing, before there
+  // is a value to check; following the key path during the parse lets that error name it.
+  struct Frame {
+    bool array;
+    std::string key;
+    std::size_t elements = 0;
+  };
+  std::vector<Frame> frames;
+  const json::parser_callback_t track = [&frames](int, json::parse_event_t event, json& parsed) {
+    using E = json::parse_event_t;
+    const bool opens = event == E::object_start || event == E::array_start;
+    if (!frames.empty() && frames.back().array && (opens || event == E::value))
+      ++frames.back().elements;
+    if (opens) frames.push_back({event == E::array_start, {}});
+    if (event == E::object_end || event == E::array_end) frames.pop_back();
+    if (event == E::key) frames.back().key = parsed.get<std::string>();
+    return true;
+  };
+  json document;
+  try {
+    document = json::parse(text, track);
+  } catch (const json::out_of_range&) {
+    Key key;
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+      // In the innermost array the failing element has not been counted yet.
+      const bool innermost = i + 1 == frames.size();
+      key = frames[i].array ? key[frames[i].elements - (innermost ? 0 : 1)] : key / frames[i].key;
+    }
+    Parser(file).fail(key, "not a finite number");
+  } catch (const json::exception& e) {
+    // nlohmann says "[json.exception.parse_error.101] parse error at line 3, column 5: <detail>".
+    const std::string what = e.what();
+    const auto at = what.find("line ");
+    const auto colon = what.find(": ", at == std::string::npos ? 0 : at);
+    std::string where = "JSON syntax error";
+    std::string detail = what;
+    if (at != std::string::npos && colon != std::string::npos) {
+      where = what.substr(at, colon - at) + ": JSON syntax error";
+      detail = what.substr(colon + 2);
+    }
+    std::string message = file.string() + ": " + where + ": " + detail;
+    std::replace_if(
+        message.begin(), message.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+    throw InputError(message);
+  }
+  return parseScene(document, file);
+}
+
+}  // namespace testbed
