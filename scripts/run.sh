@@ -1,21 +1,20 @@
 #!/usr/bin/env bash
-# The main job: set up (packages, assets, build) if needed, then render every bundled
-# scene with every registered technique into out/<scene>/ (PNG, EXR, JSON per technique).
-# Extra arguments go to each `testbed render` call (e.g. --shadow-map 512 --backend egl).
+# The main job: set up (packages, assets, build) if needed, then compare every registered
+# technique with the ground truth on every bundled scene (OSMesa by default) into
+# out/<scene>/: report.md, grid.png, speed_vs_error.svg, metrics.json and each technique's
+# PNG/EXR/JSON. Extra arguments go to each `testbed compare` call
+# (e.g. --shadow-map 512 --techniques sm,pcf --backend egl).
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$repo/scripts/setup.sh"
 testbed="${TESTBED_BUILD_DIR:-$repo/build}/testbed/app/testbed"
 out="${TESTBED_OUT:-$repo/out}"
-mapfile -t techniques < <("$testbed" list --json | python3 -c 'import json,sys; print("\n".join(t["id"] for t in json.load(sys.stdin)))')
 scenes=("$repo"/scenes/*.json)
-total=$(( ${#scenes[@]} * ${#techniques[@]} )); n=0
+n=0
 for scene in "${scenes[@]}"; do
+  n=$((n + 1))
   name="$(basename "$scene" .json)"
-  for technique in "${techniques[@]}"; do
-    n=$((n + 1))
-    echo "[$n/$total] $technique on $name" >&2
-    "$testbed" render --scene "$scene" --technique "$technique" --out "$out/$name" "$@"
-  done
+  echo "== scene $n/${#scenes[@]}: $name" >&2
+  "$testbed" compare --scene "$scene" --out "$out/$name" "$@"
 done
-echo "results in $out" >&2
+echo "reports: $out/*/report.md" >&2

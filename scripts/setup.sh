@@ -14,7 +14,7 @@ packages=(
   libosmesa6-dev libegl-dev libegl1-mesa-dev libgl-dev libglfw3-dev
   python3-glad libglm-dev libopenmesh-dev libopenimageio-dev openimageio-tools
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
-  libembree-dev libcgal-demo assimp-testmodels
+  libembree-dev libcgal-demo assimp-testmodels fonts-dejavu-core
 )
 
 log() { echo "setup: $*" >&2; }

@@ -36,5 +36,6 @@ std::map<std::string, std::string> parseAssignments(const std::vector<std::strin
 CommandRunner addListCommand(CLI::App& app);
 CommandRunner addRenderCommand(CLI::App& app);
 CommandRunner addGroundTruthCommand(CLI::App& app);
+CommandRunner addCompareCommand(CLI::App& app);
 
 }  // namespace testbed

@@ -65,7 +65,7 @@ FrameRunner::FrameRunner(const Scene& scene, const RenderSettings& settings)
   gbufferMs_ = timer.resolve().totalMs;
   checkGlError("rendering the G-buffer");
   positions_ = readTopDown(gbuffer_.position(), 4);
-  normals_ = readTopDown(gbuffer_.normal(), 3);
+  normals_ = readTopDown(gbuffer_.shadingNormal(), 3);
 }
 
 FrameRunner::~FrameRunner() = default;

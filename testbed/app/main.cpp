@@ -12,7 +12,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   const std::vector<testbed::CommandRunner> commands = {testbed::addListCommand(app),
                                                         testbed::addRenderCommand(app),
-                                                        testbed::addGroundTruthCommand(app)};
+                                                        testbed::addGroundTruthCommand(app),
+                                                        testbed::addCompareCommand(app)};
   // CLI11 would only say "a subcommand is required" for a mistyped one: name it instead.
   if (argc > 1 && argv[1][0] != '-') {
     std::string known;

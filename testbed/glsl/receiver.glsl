@@ -2,7 +2,7 @@
 // its position in the light's shadow-map space, and the rule that receivers facing away
 // from the light are shadowed. Bound by bindReceiverInputs() (render/shadow_map_pass.h).
 uniform sampler2D uGPosition;  // xyz world position, w = coverage
-uniform sampler2D uGNormal;    // unit normal facing the camera
+uniform sampler2D uGNormal;    // the triangle's unit normal, facing the camera
 uniform mat4 uLightViewProjection;
 uniform vec3 uLightPosition;
 uniform vec3 uLightDirection;  // the direction light travels

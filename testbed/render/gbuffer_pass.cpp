@@ -6,13 +6,15 @@ GBuffer::GBuffer(glm::ivec2 size)
     : size_(size),
       position_(Texture::create2D(GL_RGBA32F, size.x, size.y)),
       normal_(Texture::create2D(GL_RGBA16F, size.x, size.y)),
+      shadingNormal_(Texture::create2D(GL_RGBA16F, size.x, size.y)),
       depth_(Texture::create2D(GL_DEPTH_COMPONENT32F, size.x, size.y)),
       framebuffer_(Framebuffer::create()),
       program_(Program::graphics("testbed/render/gbuffer.vert", "testbed/render/gbuffer.frag")) {
   framebuffer_.attachColor(0, position_);
   framebuffer_.attachColor(1, normal_);
+  framebuffer_.attachColor(2, shadingNormal_);
   framebuffer_.attachDepth(depth_);
-  framebuffer_.finish({0, 1});
+  framebuffer_.finish({0, 1, 2});
 }
 
 void GBuffer::render(const GpuScene& geometry, const ViewProjection& camera) {
@@ -21,6 +23,7 @@ void GBuffer::render(const GpuScene& geometry, const ViewProjection& camera) {
   const float zero[4] = {0, 0, 0, 0};
   glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, zero);
   glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 1, zero);
+  glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 2, zero);
   glClearNamedFramebufferfi(framebuffer_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);

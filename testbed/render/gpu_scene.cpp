@@ -13,7 +13,8 @@ const float kCreaseCosine = std::cos(40.0f * 3.14159265f / 180.0f);
 
 struct Vertex {
   float position[3];
-  float normal[3];
+  float normal[3];      // smooth shading normal (split at creases)
+  float faceNormal[3];  // the triangle's own normal, for the facing rule
 };
 
 }  // namespace
@@ -28,7 +29,9 @@ GpuScene::GpuScene(const Scene& scene) {
         auto normal = mesh.normal(vertex);
         if (OpenMesh::dot(normal, faceNormal) < kCreaseCosine || !std::isfinite(normal[0])) normal = faceNormal;
         const auto& p = mesh.point(vertex);
-        vertices.push_back({{p[0], p[1], p[2]}, {normal[0], normal[1], normal[2]}});
+        vertices.push_back({{p[0], p[1], p[2]},
+                            {normal[0], normal[1], normal[2]},
+                            {faceNormal[0], faceNormal[1], faceNormal[2]}});
       }
     }
   }
@@ -43,6 +46,9 @@ GpuScene::GpuScene(const Scene& scene) {
   glEnableVertexArrayAttrib(vao, 1);
   glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, normal));
   glVertexArrayAttribBinding(vao, 1, 0);
+  glEnableVertexArrayAttrib(vao, 2);
+  glVertexArrayAttribFormat(vao, 2, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, faceNormal));
+  glVertexArrayAttribBinding(vao, 2, 0);
 }
 
 void GpuScene::draw() const {

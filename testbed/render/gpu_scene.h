@@ -11,7 +11,8 @@ namespace testbed {
 class GpuScene {
  public:
   explicit GpuScene(const Scene& scene);
-  // Binds the vertex array and draws every triangle (attribute 0 position, 1 normal).
+  // Binds the vertex array and draws every triangle (attribute 0 position, 1 smooth
+  // normal, 2 the triangle's face normal).
   void draw() const;
   std::size_t triangleCount() const { return vertexCount_ / 3; }
 

@@ -1,17 +1,20 @@
-// Mesh files are read by OpenMesh. OpenMesh trusts the element counts in a file header:
-// it reserves memory for them and loops over them even after the stream has failed, so a
-// lying header (Debian's assimp-testmodels ship invalid/OutOfMemory.off) means a huge
-// allocation or a near-endless loop. The checks below bound those counts by the file size
-// before OpenMesh sees the file.
+// Mesh files are read by OpenMesh, which is not robust against broken input: it trusts the
+// element counts in a header (reserving memory and looping over them even after the stream
+// has failed; Debian's assimp-testmodels ship invalid/OutOfMemory.off), crashes on some
+// malformed PLY headers and silently skips or zeroes unparsable coordinates. The checks
+// below replay the structure of each file, keeping nothing, so that OpenMesh only ever
+// sees files it reads correctly in time and memory bounded by the file size.
 #include <OpenMesh/Core/IO/MeshIO.hh>  // must precede the mesh type header
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <streambuf>
 #include <string>
@@ -28,6 +31,15 @@ namespace fs = std::filesystem;
 
 [[noreturn]] void fail(const fs::path& file, const std::string& problem) {
   throw InputError(file.string() + ": " + problem);
+}
+
+// File content quoted in a message: short, one line, printable.
+std::string quote(const std::string& text) {
+  std::string out = text.substr(0, 24);
+  for (char& c : out) {
+    if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
+  }
+  return "\"" + out + "\"";
 }
 
 std::string lowerExtension(const fs::path& file) {
@@ -57,25 +69,52 @@ void checkCountsFit(const fs::path& file, const std::string& what, std::uint64_t
   }
 }
 
-void checkOffHeader(const fs::path& file, std::uint64_t size) {
+// Binary OFF as OpenMesh reads it: little-endian 32-bit counts and values, colours as three
+// values, no face colours.
+void checkBinaryOff(std::istream& in, const fs::path& file, std::uint64_t size, bool normals,
+                    bool colours, bool texture) {
+  auto u32 = [&in]() -> std::optional<std::uint64_t> {
+    unsigned char raw[4];
+    if (!in.read(reinterpret_cast<char*>(raw), 4)) return std::nullopt;
+    return std::uint64_t(raw[0]) | std::uint64_t(raw[1]) << 8 | std::uint64_t(raw[2]) << 16 |
+           std::uint64_t(raw[3]) << 24;
+  };
+  const auto vertices = u32(), faces = u32(), edges = u32();
+  if (!vertices || !faces || !edges) fail(file, "corrupt OFF header: no element counts");
+  // A vertex is at least three floats, a face at least its vertex count.
+  checkCountsFit(file,
+                 std::to_string(*vertices) + " vertices and " + std::to_string(*faces) + " faces",
+                 12 * *vertices + 4 * *faces, size);
+  const std::uint64_t vertexBytes =
+      4 * (3 + (normals ? 3 : 0) + (colours ? 3 : 0) + (texture ? 2 : 0));
+  std::uint64_t remaining = size - std::min<std::uint64_t>(size, std::uint64_t(in.tellg()));
+  if (*vertices * vertexBytes > remaining)
+    fail(file, "the vertex list runs past the end of the file");
+  in.seekg(std::streamoff(*vertices * vertexBytes), std::ios::cur);
+  remaining -= *vertices * vertexBytes;
+  for (std::uint64_t f = 0; f < *faces; ++f) {
+    const auto corners = u32();
+    if (!corners || 4 + 4 * *corners > remaining) {
+      fail(file,
+           "face " + std::to_string(f) + " of " + std::to_string(*faces) + ": the file ends early");
+    }
+    in.seekg(std::streamoff(4 * *corners), std::ios::cur);
+    remaining -= 4 + 4 * *corners;
+  }
+}
+
+void checkOff(const fs::path& file, std::uint64_t size) {
   std::ifstream in(file, std::ios::binary);
   std::string header;
   std::getline(in, header);
   if (header.find("OFF") == std::string::npos) {
     fail(file, "the first line must be the OFF header (comments before it are not supported)");
   }
+  const std::string prefix = header.substr(0, header.find("OFF"));  // [ST][C][N]
+  const bool normals = prefix.find('N') != std::string::npos;
+  const bool colours = prefix.find('C') != std::string::npos;
   if (header.find("BINARY") != std::string::npos) {
-    unsigned char raw[8];
-    if (!in.read(reinterpret_cast<char*>(raw), 8))
-      fail(file, "corrupt OFF header: no element counts");
-    auto le32 = [&](int at) {
-      return std::uint64_t(raw[at]) | std::uint64_t(raw[at + 1]) << 8 |
-             std::uint64_t(raw[at + 2]) << 16 | std::uint64_t(raw[at + 3]) << 24;
-    };
-    // A binary vertex is at least three floats, a face at least its vertex count.
-    checkCountsFit(file,
-                   std::to_string(le32(0)) + " vertices and " + std::to_string(le32(4)) + " faces",
-                   12 * le32(0) + 4 * le32(4), size);
+    checkBinaryOff(in, file, size, normals, colours, prefix.find("ST") != std::string::npos);
     return;
   }
   // OpenMesh takes the counts from the tokens after the first line.
@@ -89,8 +128,8 @@ void checkOffHeader(const fs::path& file, std::uint64_t size) {
   in >> vertexToken >> faceToken;
   std::uint64_t vertices = 0, faces = 0;
   if (!parseCount(vertexToken, vertices) || !parseCount(faceToken, faces)) {
-    fail(file, "corrupt OFF header: expected vertex and face counts on the second line, got \"" +
-                   vertexToken.substr(0, 20) + " " + faceToken.substr(0, 20) + "\"");
+    fail(file, "corrupt OFF header: expected vertex and face counts on the second line, got " +
+                   quote(vertexToken + " " + faceToken));
   }
   // An ASCII vertex is at least "x y z" plus separators, a face at least "n" and a separator.
   checkCountsFit(file,
@@ -100,9 +139,7 @@ void checkOffHeader(const fs::path& file, std::uint64_t size) {
   // OpenMesh keeps looping after a failed read and reuses the last count it read as the
   // next face's size, so one bad token ("nan", a truncated file) can cost
   // faces x vertices steps. Replaying its reads here rejects such files up front.
-  const std::string prefix = header.substr(0, header.find("OFF"));
-  const int floatsPerVertex = prefix.find('N') != std::string::npos ? 6 : 3;
-  const bool faceColours = prefix.find('C') != std::string::npos;
+  const int floatsPerVertex = normals ? 6 : 3;
   std::string rest;
   float coordinate;
   unsigned edges = 0;
@@ -131,7 +168,7 @@ void checkOffHeader(const fs::path& file, std::uint64_t size) {
       if (!(in >> index))
         bad("face", f, faces, "expected " + std::to_string(corners) + " vertex indices");
     }
-    if (faceColours) std::getline(in, rest);
+    if (colours) std::getline(in, rest);
   }
 }
 
@@ -154,48 +191,59 @@ int plyTypeSize(const std::string& type) {
   return it == sizes.end() ? 0 : it->second;
 }
 
-// OpenMesh's PLY reader crashes on a property line before any element line, loops forever
-// without end_header, and trusts element counts and list lengths like the OFF reader. So
-// the header is checked and the body walked, keeping nothing, before OpenMesh reads it.
+// OpenMesh's PLY reader crashes on a property before any element, loops forever when its
+// header tokens run out before end_header, and trusts element counts and list lengths like
+// the OFF reader. So the header is re-read the way OpenMesh reads it (token by token) and
+// the body walked, keeping nothing, before OpenMesh sees the file.
 void checkPly(const fs::path& file, std::uint64_t size) {
   std::ifstream in(file, std::ios::binary);
   std::string line;
   std::getline(in, line);
-  if (line.rfind("ply", 0) != 0) fail(file, "the first line must be \"ply\"");
-  std::string format;
+  while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
+  if (line != "ply" && line != "PLY") fail(file, "the first line must be \"ply\"");
+  std::string keyword, format;
+  float version = 0;
+  if (!(in >> keyword >> format >> version) || keyword != "format") {
+    fail(file, "corrupt PLY header: expected \"format <type> <version>\" on the second line");
+  }
   std::vector<PlyElement> elements;
-  bool ended = false;
-  // Headers are short; a header that never ends is as corrupt as one with a bad count.
-  for (int lines = 0; lines < 10000 && !ended && std::getline(in, line); ++lines) {
-    std::istringstream words(line);
-    std::string keyword, a, b, c;
-    words >> keyword >> a >> b >> c;
-    if (keyword == "format") {
-      format = a;
+  while (true) {
+    if (!(in >> keyword)) fail(file, "corrupt PLY header: no end_header");
+    if (keyword == "end_header") break;
+    if (keyword == "comment") {
+      std::getline(in, line);
     } else if (keyword == "element") {
-      elements.push_back({a, 0, {}});
-      if (!parseCount(b, elements.back().count)) fail(file, "corrupt PLY header: bad count for element " + a);
+      std::string name, count;
+      in >> name >> count;
+      elements.push_back({name, 0, {}});
+      if (!parseCount(count, elements.back().count)) {
+        fail(file, "corrupt PLY header: bad count for element " + quote(name));
+      }
     } else if (keyword == "property") {
       if (elements.empty()) fail(file, "corrupt PLY header: property before any element");
+      std::string a, b, c;
+      in >> a >> b;
       PlyProperty property;
       if (a == "list") {
+        in >> c >> line;  // entry type, then the name
         property.countBytes = plyTypeSize(b);
         property.valueBytes = plyTypeSize(c);
       } else {
         property.valueBytes = std::max(plyTypeSize(a), plyTypeSize(b));  // either order occurs
       }
       if (property.valueBytes == 0 || (a == "list" && property.countBytes == 0)) {
-        fail(file, "corrupt PLY header: unknown type in \"" + line.substr(0, 60) + "\"");
+        fail(file, "corrupt PLY header: unknown property type in element " +
+                       quote(elements.back().name));
       }
       elements.back().properties.push_back(property);
-    } else if (keyword == "end_header") {
-      ended = true;
     }
   }
-  if (!ended) fail(file, "corrupt PLY header: no end_header line");
+  // The data starts after the line break that follows end_header.
+  if (in.peek() == '\r') in.get();
+  if (in.peek() == '\n') in.get();
   const bool ascii = format == "ascii", bigEndian = format == "binary_big_endian";
   if (!ascii && !bigEndian && format != "binary_little_endian") {
-    fail(file, "unsupported PLY format \"" + format.substr(0, 30) + "\"");
+    fail(file, "unsupported PLY format " + quote(format));
   }
 
   // The cheap bound first: every element needs a few bytes, whatever its lists hold.
@@ -203,7 +251,8 @@ void checkPly(const fs::path& file, std::uint64_t size) {
   std::uint64_t needed = 0;
   for (const auto& element : elements) {
     std::uint64_t bytes = 0;  // an ASCII value is at least one character and a separator
-    for (const auto& p : element.properties) bytes += ascii ? 2 : (p.countBytes ? p.countBytes : p.valueBytes);
+    for (const auto& p : element.properties)
+      bytes += ascii ? 2 : (p.countBytes ? p.countBytes : p.valueBytes);
     // Counts beyond the file size fail anyway; clamping keeps the sum from overflowing.
     needed += std::min(element.count, size + 1) * std::max<std::uint64_t>(bytes, 1);
   }
@@ -215,7 +264,7 @@ void checkPly(const fs::path& file, std::uint64_t size) {
   for (const auto& element : elements) {
     for (std::uint64_t i = 0; i < element.count; ++i) {
       auto bad = [&](const std::string& problem) {
-        fail(file, element.name.substr(0, 30) + " " + std::to_string(i) + " of " +
+        fail(file, "element " + quote(element.name) + " " + std::to_string(i) + " of " +
                        std::to_string(element.count) + ": " + problem);
       };
       for (const auto& p : element.properties) {
@@ -223,7 +272,8 @@ void checkPly(const fs::path& file, std::uint64_t size) {
         if (ascii) {
           if (p.countBytes) {
             if (!(in >> token)) bad("the file ends early");
-            if (!parseCount(token, values)) bad("expected a list length, got \"" + token.substr(0, 20) + "\"");
+            if (!parseCount(token, values))
+              bad("expected a list length, got " + quote(token));
           }
           for (std::uint64_t v = 0; v < values; ++v) {
             if (!(in >> token)) bad("the file ends early");
@@ -232,7 +282,8 @@ void checkPly(const fs::path& file, std::uint64_t size) {
         }
         if (p.countBytes) {
           unsigned char raw[4] = {};
-          if (remaining < std::uint64_t(p.countBytes) || !in.read(reinterpret_cast<char*>(raw), p.countBytes)) {
+          if (remaining < std::uint64_t(p.countBytes) ||
+              !in.read(reinterpret_cast<char*>(raw), p.countBytes)) {
             bad("the file ends early");
           }
           remaining -= p.countBytes;
@@ -242,14 +293,45 @@ void checkPly(const fs::path& file, std::uint64_t size) {
           }
         }
         if (values * p.valueBytes > remaining) {
-          bad(p.countBytes ? "a list of " + std::to_string(values) + " values runs past the end of the file"
-                           : "the file ends early");
+          bad(p.countBytes
+                  ? "a list of " + std::to_string(values) + " values runs past the end of the file"
+                  : "the file ends early");
         }
         in.ignore(std::streamsize(values * p.valueBytes));
         remaining -= values * p.valueBytes;
       }
     }
   }
+}
+
+// OpenMesh's OBJ and ASCII STL readers skip or zero a vertex they cannot parse ("nan",
+// "1e39") without complaint, which shifts or corrupts the mesh; so those lines are checked
+// here. (Binary STL floats are caught by the finite check after reading.)
+void checkVertexLines(const fs::path& file, const std::string& keyword) {
+  std::ifstream in(file, std::ios::binary);
+  std::string line, word;
+  for (std::uint64_t number = 1; std::getline(in, line); ++number) {
+    std::istringstream words(line);
+    if (!(words >> word) || word != keyword) continue;
+    for (int i = 0; i < 3; ++i) {
+      word.clear();
+      words >> word;
+      char* end = nullptr;
+      const float x = std::strtof(word.c_str(), &end);
+      if (word.empty() || *end != '\0' || !std::isfinite(x)) {
+        fail(file, "line " + std::to_string(number) + ": expected 3 finite vertex coordinates");
+      }
+    }
+  }
+}
+
+bool isBinaryStl(const fs::path& file, std::uint64_t size) {
+  std::ifstream in(file, std::ios::binary);
+  unsigned char head[84] = {};
+  if (size < 84 || !in.read(reinterpret_cast<char*>(head), 84)) return false;
+  const std::uint64_t triangles = std::uint64_t(head[80]) | std::uint64_t(head[81]) << 8 |
+                                  std::uint64_t(head[82]) << 16 | std::uint64_t(head[83]) << 24;
+  return size == 84 + 50 * triangles;  // the size test OpenMesh uses as well
 }
 
 // OpenMesh reports through omerr/omlog/omout and, in places, straight to std::cerr; a bad
@@ -297,8 +379,10 @@ TriMesh readMeshFile(const fs::path& file) {
   const std::uintmax_t size = fs::file_size(file, ec);
   if (ec) fail(file, "cannot read the file size: " + ec.message());
   if (size == 0) fail(file, "file is empty");
-  if (ext == ".off") checkOffHeader(file, size);
+  if (ext == ".off") checkOff(file, size);
   if (ext == ".ply") checkPly(file, size);
+  if (ext == ".obj") checkVertexLines(file, "v");
+  if (ext == ".stl" && !isBinaryStl(file, size)) checkVertexLines(file, "vertex");
 
   TriMesh mesh;
   {

@@ -117,6 +117,38 @@ TEST_F(MeshIo, NanCoordinateInOffThrows) {
               "vertex 1 of 3: expected 3 finite numbers");
 }
 
+TEST_F(MeshIo, NanCoordinateInAsciiStlThrows) {
+  // OpenMesh would silently read this "nan" as 0.
+  expectError(write("nan.stl",
+                    "solid x\nfacet normal 0 0 1\nouter loop\nvertex nan 0 0\nvertex 1 0 0\n"
+                    "vertex 0 1 0\nendloop\nendfacet\nendsolid x\n"),
+              "line 4: expected 3 finite vertex coordinates");
+}
+
+TEST_F(MeshIo, NanCoordinateInObjThrows) {
+  // OpenMesh would drop this vertex and silently shift every later index.
+  expectError(write("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 4\n"),
+              "line 2: expected 3 finite vertex coordinates");
+  expectError(write("big.obj", "v 0 0 0\nv 1e39 0 0\nv 0 1 0\nf 1 2 3\n"), "line 2");
+}
+
+TEST_F(MeshIo, ReadsAsciiAndBinaryStl) {
+  const TriMesh ascii =
+      readMeshFile(write("tri.stl",
+                         "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"
+                         "vertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid x\n"));
+  EXPECT_EQ(ascii.n_faces(), 1u);
+  std::string binary(80, ' ');
+  const std::uint32_t count = 1;
+  binary.append(reinterpret_cast<const char*>(&count), 4);
+  const float facet[12] = {0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0};
+  binary.append(reinterpret_cast<const char*>(facet), sizeof facet);
+  binary.append(2, '\0');
+  const TriMesh mesh = readMeshFile(write("bin.stl", binary));
+  EXPECT_EQ(mesh.n_faces(), 1u);
+  expectUnitNormals(mesh);
+}
+
 TEST_F(MeshIo, NanCoordinateInBinaryPlyThrows) {
   // Binary floats bypass text parsing, so the non-finite check itself must catch them.
   std::string ply =
@@ -159,6 +191,22 @@ TEST_F(MeshIo, OffCommentBeforeTheHeaderThrows) {
               "first line must be the OFF header");
 }
 
+TEST_F(MeshIo, BinaryOff) {
+  auto binaryOff = [](std::uint32_t corners) {
+    std::string off = "OFF BINARY\n";
+    const std::uint32_t counts[3] = {3, 1, 0};
+    off.append(reinterpret_cast<const char*>(counts), sizeof counts);
+    const float coords[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    off.append(reinterpret_cast<const char*>(coords), sizeof coords);
+    const std::uint32_t face[4] = {corners, 0, 1, 2};
+    off.append(reinterpret_cast<const char*>(face), sizeof face);
+    return off;
+  };
+  EXPECT_EQ(readMeshFile(write("bin.off", binaryOff(3))).n_faces(), 1u);
+  // A corrupt vertex count for the face would make OpenMesh push billions of indices.
+  expectError(write("huge.off", binaryOff(4000000000u)), "face 0 of 1: the file ends early");
+}
+
 TEST_F(MeshIo, OffCountsOnTheHeaderLineThrow) {
   expectError(write("oneline.off", "OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"), "first line");
 }
@@ -171,6 +219,29 @@ TEST_F(MeshIo, LyingPlyHeaderThrows) {
             "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
       "corrupt header");
   expectError(write("endless.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"), "no end_header");
+}
+
+TEST_F(MeshIo, PlyHeadersThatCrashOrHangOpenMeshThrow) {
+  // A property before any element makes OpenMesh index an empty list (segfault).
+  expectError(write("orphan.ply",
+                    "ply\nformat ascii 1.0 property float x\nelement vertex 3\nproperty float x\n"
+                    "end_header\n0\n0\n0\n"),
+              "property before any element");
+  // An unreadable version number leaves OpenMesh re-reading the same keyword forever.
+  expectError(write("version.ply", "ply\nformat ascii x.0\nelement vertex 1\nend_header\n0\n"),
+              "expected \"format <type> <version>\"");
+}
+
+TEST_F(MeshIo, PlyListLongerThanTheFileThrows) {
+  std::string ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+      "property float y\nproperty float z\nelement face 1\n"
+      "property list int int vertex_indices\nend_header\n";
+  const float coords[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  ply.append(reinterpret_cast<const char*>(coords), sizeof coords);
+  const std::int32_t face[4] = {2000000000, 0, 1, 2};
+  ply.append(reinterpret_cast<const char*>(face), sizeof face);
+  expectError(write("list.ply", ply), "a list of 2000000000 values runs past the end of the file");
 }
 
 TEST_F(MeshIo, ReadsAsciiPly) {

@@ -342,7 +342,8 @@ TEST_F(SceneParser, OutOfRangeValues) {
   expectBad([](json& s) { s["camera"]["far"] = 0.1; }, "camera.far", "must be greater than near");
   expectBad([](json& s) { s["light"]["radius"] = -1; }, "light.radius", "must be >= 0");
   expectBad([](json& s) { s["objects"][0]["scale"] = 0; }, "objects[0].scale", "must be > 0");
-  expectBad([](json& s) { s["camera"]["near"] = 1e-50; }, "camera.near", "must be > 0");  // 0 as float
+  expectBad([](json& s) { s["camera"]["near"] = 1e-50; }, "camera.near",
+            "must be > 0");  // 0 as float
   expectBad(
       [](json& s) {
         s["objects"][0]["scale"] = {1, 1, -1};

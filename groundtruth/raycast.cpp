@@ -1,0 +1,289 @@
+#include "groundtruth/raycast.h"
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "testbed/core/error.h"
+#include "testbed/render/gbuffer_pass.h"
+
+namespace testbed {
+namespace {
+
+// Relative epsilons (see the comment in trace() for why they are along the ray only).
+constexpr float kNearFraction = 1e-4f;  // tnear = this × the scene's bounding-box diagonal
+constexpr float kFarShrink = 1e-6f;     // spot: tfar = distance to the light × (1 − this)
+constexpr int kMaxThreads = 2;          // rows are split between at most this many threads
+
+const char* errorName(RTCError code) {
+  switch (code) {
+    case RTC_ERROR_NONE: return "no error";
+    case RTC_ERROR_UNKNOWN: return "unknown error";
+    case RTC_ERROR_INVALID_ARGUMENT: return "invalid argument";
+    case RTC_ERROR_INVALID_OPERATION: return "invalid operation";
+    case RTC_ERROR_OUT_OF_MEMORY: return "out of memory";
+    case RTC_ERROR_UNSUPPORTED_CPU: return "unsupported CPU";
+    case RTC_ERROR_CANCELLED: return "cancelled";
+  }
+  return "unrecognised error";
+}
+
+// One Embree device and the scene built from one testbed Scene's meshes (world space).
+class EmbreeScene {
+ public:
+  EmbreeScene() = default;
+  EmbreeScene(const EmbreeScene&) = delete;
+  EmbreeScene& operator=(const EmbreeScene&) = delete;
+  ~EmbreeScene() { reset(); }
+
+  void build(const Scene& scene) {
+    reset();
+    if (!device_) {
+      // Embree's own threads only build the BVH; tracing uses ours (kMaxThreads).
+      device_ = rtcNewDevice("threads=2");
+      if (!device_)
+        throw GlError(std::string("raycast: rtcNewDevice failed: ") + errorName(rtcGetDeviceError(nullptr)));
+      rtcSetDeviceErrorFunction(device_, &EmbreeScene::onError, this);
+      // Ground truth must see both sides of every triangle: a build with backface culling
+      // would let rays through every occluder facing away from the receiver.
+      if (rtcGetDeviceProperty(device_, RTC_DEVICE_PROPERTY_BACKFACE_CULLING_ENABLED) != 0)
+        throw GlError("raycast: this Embree build culls back faces; the ray caster needs two-sided triangles");
+    }
+    scene_ = rtcNewScene(device_);
+    check("rtcNewScene");
+    // Robust mode: watertight triangle tests, so a ray through a shared edge or vertex of
+    // a closed mesh cannot slip between its two triangles.
+    rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
+
+    glm::vec3 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
+    triangles_ = 0;
+    for (const SceneObject& object : scene.objects) {
+      const TriMesh& mesh = object.mesh;
+      if (mesh.n_faces() == 0 || mesh.n_vertices() == 0) continue;
+      RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+      check("rtcNewGeometry for " + object.label);
+      // Embree pads buffers it allocates itself, as its SSE loads require.
+      auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+          geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.n_vertices()));
+      auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+          geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.n_faces()));
+      if (!vertices || !indices) {
+        rtcReleaseGeometry(geometry);
+        check("allocating the buffers of " + object.label);
+        throw GlError("raycast: could not allocate the buffers of " + object.label);
+      }
+      for (const auto v : mesh.vertices()) {
+        const auto& p = mesh.point(v);
+        for (int c = 0; c < 3; ++c) vertices[3 * std::size_t(v.idx()) + c] = p[c];
+        lo = glm::min(lo, glm::vec3(p[0], p[1], p[2]));
+        hi = glm::max(hi, glm::vec3(p[0], p[1], p[2]));
+      }
+      std::size_t count = 0;
+      for (const auto face : mesh.faces()) {
+        int corner = 0;
+        for (const auto v : face.vertices()) {
+          if (corner == 3) {
+            rtcReleaseGeometry(geometry);
+            throw GlError("raycast: " + object.label + " has a face with more than three corners");
+          }
+          indices[3 * count + corner++] = unsigned(v.idx());
+        }
+        ++count;
+      }
+      // (Deleted faces, if any, are skipped by faces(): shrink the buffer's used count.)
+      if (count != mesh.n_faces()) {
+        rtcReleaseGeometry(geometry);
+        throw GlError("raycast: " + object.label + " holds deleted faces (garbage-collect it first)");
+      }
+      rtcCommitGeometry(geometry);
+      rtcAttachGeometry(scene_, geometry);
+      rtcReleaseGeometry(geometry);
+      check("committing " + object.label);
+      triangles_ += count;
+    }
+    rtcCommitScene(scene_);
+    check("rtcCommitScene");
+    diagonal_ = triangles_ > 0 ? glm::length(hi - lo) : 0.0f;
+  }
+
+  // A fingerprint of what was built, so a scene at a reused address is noticed.
+  bool holds(const Scene& scene) const {
+    if (!scene_ || &scene != source_ || scene.objects.size() != objects_) return false;
+    std::size_t triangles = 0;
+    for (const auto& object : scene.objects) triangles += object.mesh.n_faces();
+    return triangles == triangles_;
+  }
+  void remember(const Scene& scene) {
+    source_ = &scene;
+    objects_ = scene.objects.size();
+  }
+
+  RTCScene scene() const { return scene_; }
+  float diagonal() const { return diagonal_; }
+
+  void check(const std::string& what) const {
+    const RTCError code = rtcGetDeviceError(device_);
+    if (code != RTC_ERROR_NONE)
+      throw GlError("raycast: " + what + ": " + errorName(code) + (message_.empty() ? "" : " (" + message_ + ")"));
+  }
+
+  void release() {
+    reset();
+    if (device_) rtcReleaseDevice(device_);
+    device_ = nullptr;
+  }
+
+ private:
+  static void onError(void* self, RTCError, const char* message) {
+    static_cast<EmbreeScene*>(self)->message_ = message ? message : "";
+  }
+  void reset() {
+    if (scene_) rtcReleaseScene(scene_);
+    scene_ = nullptr;
+    source_ = nullptr;
+    objects_ = triangles_ = 0;
+  }
+
+  RTCDevice device_ = nullptr;
+  RTCScene scene_ = nullptr;
+  const Scene* source_ = nullptr;
+  std::size_t objects_ = 0, triangles_ = 0;
+  float diagonal_ = 0;
+  std::string message_;
+};
+
+class RayCast final : public ShadowTechnique {
+ public:
+  ~RayCast() override { embree_.release(); }
+
+  static const TechniqueInfo& staticInfo() {
+    static const TechniqueInfo info = [] {
+      TechniqueInfo i;
+      i.id = "raycast";
+      i.family = "groundtruth";
+      i.output = OutputKind::Hard;
+      i.citation = "Embree shadow rays (Wald et al. 2014)";
+      i.summary = "exact hard shadows: one Embree occlusion ray per receiver pixel (cross-check)";
+      return i;
+    }();
+    return info;
+  }
+
+  const TechniqueInfo& info() const override { return staticInfo(); }
+  void configure(const ParameterSet&) override {}
+
+  void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {
+    auto scope = timer.scope("raycast");
+    glFlush();  // the timer's query starts now on the GPU too, so its interval spans our CPU work
+    if (!embree_.holds(in.scene)) {
+      embree_.build(in.scene);
+      embree_.remember(in.scene);
+    }
+    const int width = in.size.x, height = in.size.y;
+    if (in.gbuffer.size() != in.size || out.texture.width() != width || out.texture.height() != height)
+      throw GlError("raycast: the G-buffer, the visibility target and the screen differ in size");
+    // Rows bottom-up on both sides (GL order): no flip needed.
+    positions_ = in.gbuffer.position().readFloats(4);
+    normals_ = in.gbuffer.normal().readFloats(3);
+    visibility_.assign(std::size_t(width) * height, 0.0f);
+
+    const int threads = std::clamp(int(std::thread::hardware_concurrency()), 1, kMaxThreads);
+    std::vector<std::thread> workers;
+    for (int t = 1; t < threads; ++t)
+      workers.emplace_back([&, t] { trace(in, t, threads); });
+    trace(in, 0, threads);
+    for (auto& worker : workers) worker.join();
+    embree_.check("tracing shadow rays");
+
+    glTextureSubImage2D(out.texture.id(), 0, 0, 0, width, height, GL_RED, GL_FLOAT, visibility_.data());
+    checkGlError("raycast: uploading the visibility");
+  }
+
+ private:
+  // Traces rows first, first + stride, ... Every pixel depends on its own inputs alone, so
+  // the result does not depend on the number of threads.
+  void trace(const FrameInputs& in, int first, int stride) {
+    const LightTransforms& light = in.light;
+    const glm::mat4 lightViewProjection = light.viewProjection();
+    // Self-intersection: the receiver lies ON a triangle of the scene, so the ray's first
+    // candidate hit is its own surface at t ≈ 0 (± the G-buffer's float rounding). tnear
+    // skips hits closer than ε along the ray: the ray keeps the exact line from the
+    // receiver to the light, so no shadow boundary moves; only occluders within ε of the
+    // receiver (contact points) are ignored, a region far below a pixel's footprint.
+    // Offsetting the origin along the normal would instead move the ray sideways by
+    // ε·sin(angle to the light) and shift every shadow edge, and on grazing receivers
+    // slide it under nearby occluders. ε = 1e-4 × the scene's diagonal is far above the
+    // G-buffer's rounding (~1e-7 × coordinates) and far below a pixel's footprint.
+    const float tnear = kNearFraction * embree_.diagonal();
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    const RTCScene scene = embree_.scene();
+    const int width = in.size.x, height = in.size.y;
+    for (int y = first; y < height; y += stride) {
+      for (int x = 0; x < width; ++x) {
+        const std::size_t i = std::size_t(y) * width + x;
+        const float* gp = &positions_[4 * i];
+        if (!(gp[3] > 0.5f)) continue;  // background: not a receiver
+        const glm::vec3 p(gp[0], gp[1], gp[2]);
+        const glm::vec3 n(normals_[3 * i], normals_[3 * i + 1], normals_[3 * i + 2]);
+        // Same rules, same order of float operations as glsl/receiver.glsl.
+        const glm::vec3 towards = light.orthographic ? -light.direction : glm::normalize(light.position - p);
+        if (glm::dot(n, towards) <= 0.0f) continue;  // faces away: shadowed
+        const glm::vec4 clip = lightViewProjection * glm::vec4(p, 1.0f);
+        if (clip.w <= 0.0f) continue;  // behind the light: outside the frustum
+        const glm::vec3 ndc = glm::vec3(clip) / clip.w * 0.5f + 0.5f;
+        if (!(ndc.x >= 0.0f && ndc.y >= 0.0f && ndc.x <= 1.0f && ndc.y <= 1.0f && ndc.z <= 1.0f)) continue;
+
+        RTCRay ray;
+        ray.org_x = p.x;
+        ray.org_y = p.y;
+        ray.org_z = p.z;
+        ray.tnear = tnear;
+        ray.time = 0.0f;
+        ray.mask = 0xFFFFFFFFu;
+        ray.id = 0;
+        ray.flags = 0;
+        glm::vec3 direction;
+        if (light.orthographic) {
+          // Directional: everything upstream of the receiver occludes, however far.
+          direction = -light.direction;
+          ray.tfar = std::numeric_limits<float>::infinity();
+        } else {
+          // Spot: only the segment to the light occludes (the shadow volumes, too, extrude
+          // away from the light, never behind it). Stopping a hair short of the light keeps
+          // geometry through the light's own position, an edge-on degenerate case that the
+          // volumes leave out, from counting by rounding.
+          const glm::vec3 toLight = light.position - p;
+          const float distance = glm::length(toLight);
+          direction = toLight / distance;
+          ray.tfar = distance * (1.0f - kFarShrink);
+        }
+        ray.dir_x = direction.x;
+        ray.dir_y = direction.y;
+        ray.dir_z = direction.z;
+        rtcOccluded1(scene, &context, &ray);
+        // rtcOccluded1 sets tfar to −∞ when the ray is blocked.
+        visibility_[i] = ray.tfar >= 0.0f ? 1.0f : 0.0f;
+      }
+    }
+  }
+
+  EmbreeScene embree_;
+  std::vector<float> positions_, normals_, visibility_;
+};
+
+}  // namespace
+
+const RegisteredTechnique& rayCastGroundTruth() {
+  static const RegisteredTechnique entry{&RayCast::staticInfo(), [] { return std::make_unique<RayCast>(); }};
+  return entry;
+}
+
+}  // namespace testbed

@@ -1,0 +1,370 @@
+// The Embree ray caster against analytic shadows (a box's square, a sphere's ellipse) and
+// against the stencil shadow-volume ground truth on the same scenes and on every bundled
+// scene. The ray caster has no shadow-map texels: its only error is the G-buffer
+// position's rounding, so the bands excluded around analytic boundaries are two pixels'
+// world footprint, not shadow-map texels.
+#include "groundtruth/raycast.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <numbers>
+#include <string>
+
+#include "groundtruth/shadow_volumes.h"
+#include "testbed/app/frame_runner.h"
+#include "testbed/io/image_io.h"
+#include "testbed/scene/primitives.h"
+#include "tests/gl_fixture.h"
+
+namespace testbed {
+namespace {
+
+TriMesh translated(TriMesh mesh, OpenMesh::Vec3f offset) {
+  for (auto v : mesh.vertices()) mesh.point(v) += offset;
+  mesh.update_normals();
+  return mesh;
+}
+
+LightDesc directional(glm::vec3 direction, float extent = 40) {
+  LightDesc light;
+  light.type = LightType::Directional;
+  light.direction = glm::normalize(direction);
+  light.target = {0, 0, 0};
+  light.extent = extent;
+  return light;
+}
+
+LightDesc spot(glm::vec3 eye, float fov) {
+  LightDesc light;
+  light.type = LightType::Spot;
+  light.eye = eye;
+  light.target = {0, 0, 0};
+  light.fovDegrees = fov;
+  return light;
+}
+
+Scene floorScene(const std::string& name, const LightDesc& light) {
+  Scene scene;
+  scene.name = name;
+  scene.camera.eye = {28, 34, -30};
+  scene.camera.target = {0, 0, 0};
+  scene.light = light;
+  scene.objects.push_back({"plane", makePlane(80, 80)});
+  return scene;
+}
+
+// Box from y = 10 to 12, x and z in [−5, 5].
+Scene boxOverPlane(const LightDesc& light) {
+  Scene scene = floorScene(light.type == LightType::Spot ? "box-over-plane-spot" : "box-over-plane", light);
+  scene.objects.push_back({"box", translated(makeBox(10, 2, 10), {0, 11, 0})});
+  return scene;
+}
+
+constexpr float kSphereRadius = 5;
+constexpr int kSphereSegments = 128, kSphereRings = 64;
+const glm::vec3 kSphereCentre{1, 12, -2};
+
+Scene sphereOverPlane(const LightDesc& light) {
+  Scene scene = floorScene("sphere-over-plane", light);
+  scene.objects.push_back({"sphere", translated(makeSphere(kSphereRadius, kSphereSegments, kSphereRings),
+                                                {kSphereCentre.x, kSphereCentre.y, kSphereCentre.z})});
+  return scene;
+}
+
+TechniqueRun runRayCast(FrameRunner& runner) {
+  return runner.run(rayCastGroundTruth(), resolveParameters("raycast", rayCastGroundTruth().info->parameters, {}));
+}
+TechniqueRun runVolumes(FrameRunner& runner) {
+  return runner.run(shadowVolumeGroundTruth(),
+                    resolveParameters("groundtruth", shadowVolumeGroundTruth().info->parameters, {}));
+}
+
+glm::vec3 positionAt(const ImageF& positions, int x, int y) {
+  return {positions.at(x, y, 0), positions.at(x, y, 1), positions.at(x, y, 2)};
+}
+bool covered(const ImageF& positions, int x, int y) { return positions.at(x, y, 3) > 0.5f; }
+
+// World size of a pixel at (x, y): the largest step to a covered 4-neighbour on the same
+// surface (same height here, as only floor pixels are asked).
+float footprint(const ImageF& positions, int x, int y) {
+  const glm::vec3 p = positionAt(positions, x, y);
+  float step = 0;
+  const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
+  for (int k = 0; k < 4; ++k) {
+    const int nx = x + dx[k], ny = y + dy[k];
+    if (nx < 0 || ny < 0 || nx >= positions.width || ny >= positions.height || !covered(positions, nx, ny)) continue;
+    const glm::vec3 q = positionAt(positions, nx, ny);
+    if (std::abs(q.y - p.y) > 1e-3f) continue;
+    step = std::max(step, glm::length(q - p));
+  }
+  return step;
+}
+
+struct FloorCheck {
+  int checked = 0, shadowChecked = 0, mismatches = 0;
+};
+
+// Checks every floor pixel (y = 0) against `expectShadow`, except those for which
+// `signedDistance` (world units, negative inside the shadow) lies within two pixel
+// footprints of the boundary, or that lie that close to the floor's edge (|x|, |z| = floorHalf).
+template <typename SignedDistance>
+FloorCheck checkFloor(const ImageF& visibility, const ImageF& positions, SignedDistance signedDistance,
+                      float floorHalf) {
+  FloorCheck result;
+  for (int y = 0; y < visibility.height; ++y)
+    for (int x = 0; x < visibility.width; ++x) {
+      if (!covered(positions, x, y)) continue;
+      const glm::vec3 p = positionAt(positions, x, y);
+      if (std::abs(p.y) > 1e-3f) continue;
+      const float band = 2 * footprint(positions, x, y);
+      if (std::max(std::abs(p.x), std::abs(p.z)) > floorHalf - band) continue;
+      const float d = signedDistance(p);
+      if (std::abs(d) < band) continue;
+      const bool expectShadow = d < 0;
+      const bool shadow = visibility.at(x, y) < 0.5f;
+      ++result.checked;
+      result.shadowChecked += expectShadow;
+      if (shadow != expectShadow && result.mismatches++ < 5)
+        ADD_FAILURE() << "pixel " << x << "," << y << " at (" << p.x << ", " << p.z << ") distance " << d
+                      << (shadow ? " shadowed" : " lit");
+    }
+  return result;
+}
+
+class RayCastAnalytic : public ::testing::Test {
+ protected:
+  void SetUp() override { test::sharedContext(); }
+};
+
+TEST_F(RayCastAnalytic, InfoIsAHardGroundTruthWithoutParameters) {
+  const TechniqueInfo& info = *rayCastGroundTruth().info;
+  EXPECT_EQ(info.id, "raycast");
+  EXPECT_EQ(info.family, "groundtruth");
+  EXPECT_EQ(info.output, OutputKind::Hard);
+  EXPECT_TRUE(info.parameters.empty());
+  EXPECT_FALSE(info.citation.empty());
+  for (const auto& registered : registeredTechniques()) EXPECT_NE(registered.info->id, "raycast");
+}
+
+TEST_F(RayCastAnalytic, DirectionalLightCastsTheBoxSquare) {
+  const Scene scene = boxOverPlane(directional({0, -1, 0}));
+  RenderSettings settings;
+  settings.size = {640, 480};
+  FrameRunner runner(scene, settings);
+  const TechniqueRun result = runRayCast(runner);
+  const auto square = [](const glm::vec3& p) { return std::max(std::abs(p.x), std::abs(p.z)) - 5.0f; };
+  const FloorCheck check = checkFloor(result.visibility, runner.positions(), square, 40);
+  EXPECT_GT(check.checked, 100000);
+  EXPECT_GT(check.shadowChecked, 5000);
+  EXPECT_EQ(check.mismatches, 0);
+  EXPECT_EQ(result.times.order, std::vector<std::string>{"raycast"});
+}
+
+TEST_F(RayCastAnalytic, SpotLightCastsTheScaledTopFace) {
+  // The top face (y = 12) projects largest from a light at height 40: half side 5·40/28;
+  // the 60° cone covers |x|, |z| < 40·tan(30°) ≈ 23 on the floor, and shadows beyond.
+  const Scene scene = boxOverPlane(spot({0, 40, 0}, 60));
+  RenderSettings settings;
+  settings.size = {640, 480};
+  FrameRunner runner(scene, settings);
+  const TechniqueRun result = runRayCast(runner);
+  const float halfSide = 5.0f * 40.0f / 28.0f, cone = 40.0f * std::tan(glm::radians(30.0f));
+  const auto shadowOrCone = [&](const glm::vec3& p) {
+    const float chebyshev = std::max(std::abs(p.x), std::abs(p.z));
+    // Inside the square or outside the cone is shadow: the distance to the nearer boundary.
+    return std::min(chebyshev - halfSide, cone - chebyshev);
+  };
+  const FloorCheck check = checkFloor(result.visibility, runner.positions(), shadowOrCone, 40);
+  EXPECT_GT(check.checked, 100000);
+  EXPECT_GT(check.shadowChecked, 5000);
+  EXPECT_EQ(check.mismatches, 0);
+}
+
+// The sphere's shadow along a unit direction d is the set of floor points q whose line
+// q − t·d passes within the radius of the centre: |(c − q) × d| < r, an ellipse with
+// semi-axes r and r/|d.y| (a circle of radius r for d straight down). The mesh is a UV
+// sphere, so its silhouette lies between r·cos(π/segments)·cos(π/rings) and r; points
+// between the two are not checked.
+void checkSphereShadow(glm::vec3 direction) {
+  // Extent 60 > the floor's half diagonal: the light's box covers the whole floor.
+  const LightDesc light = directional(direction, 60);
+  const Scene scene = sphereOverPlane(light);
+  RenderSettings settings;
+  settings.size = {640, 480};
+  FrameRunner runner(scene, settings);
+  const TechniqueRun result = runRayCast(runner);
+  const glm::vec3 d = light.direction;
+  const float inner = kSphereRadius * std::cos(std::numbers::pi_v<float> / kSphereSegments) *
+                      std::cos(std::numbers::pi_v<float> / kSphereRings);
+  const auto ellipse = [&](const glm::vec3& q) {
+    const float distance = glm::length(glm::cross(kSphereCentre - q, d));
+    if (distance < inner) return distance - inner;
+    if (distance > kSphereRadius) return distance - kSphereRadius;
+    return 0.0f;  // between the mesh's inner and outer bounds: not checked
+  };
+  const FloorCheck check = checkFloor(result.visibility, runner.positions(), ellipse, 40);
+  EXPECT_GT(check.checked, 100000);
+  // The ellipse's area is π r²/|d.y|; a good share of it must be checked.
+  EXPECT_GT(check.shadowChecked, 2000);
+  EXPECT_EQ(check.mismatches, 0);
+}
+
+TEST_F(RayCastAnalytic, SphereStraightDownCastsACircleOfItsRadius) { checkSphereShadow({0, -1, 0}); }
+
+TEST_F(RayCastAnalytic, SphereUnderObliqueLightCastsAnEllipse) { checkSphereShadow({0.6f, -1, 0.3f}); }
+
+TEST_F(RayCastAnalytic, OpenOccluderBlocksFromItsBackSide) {
+  // A floating quad facing up (+y) over the floor, light straight down: every shadow ray
+  // meets its back side, which must block as much as a front side does.
+  Scene scene = floorScene("quad-over-plane", directional({0, -1, 0}));
+  scene.objects.push_back({"quad", translated(makePlane(10, 10), {0, 10, 0})});
+  RenderSettings settings;
+  settings.size = {320, 240};
+  FrameRunner runner(scene, settings);
+  const TechniqueRun result = runRayCast(runner);
+  const auto square = [](const glm::vec3& p) { return std::max(std::abs(p.x), std::abs(p.z)) - 5.0f; };
+  const FloorCheck check = checkFloor(result.visibility, runner.positions(), square, 40);
+  EXPECT_GT(check.shadowChecked, 500);
+  EXPECT_EQ(check.mismatches, 0);
+}
+
+TEST_F(RayCastAnalytic, ReceiversFacingAwayFromTheLightAreShadowed) {
+  Scene scene = floorScene("plane-lit-from-below", directional({0, 1, 0}, 60));
+  RenderSettings settings;
+  settings.size = {160, 120};
+  FrameRunner runner(scene, settings);
+  const TechniqueRun result = runRayCast(runner);
+  int receivers = 0;
+  for (float v : result.visibility.pixels)
+    if (!std::isnan(v)) {
+      ++receivers;
+      EXPECT_EQ(v, 0.0f);
+    }
+  EXPECT_GT(receivers, 1000);
+}
+
+TEST_F(RayCastAnalytic, LitFloorWithoutOccludersIsLitEverywhereInTheFrustum) {
+  // No self-shadowing: a bare floor under an oblique light is lit wherever it faces it.
+  Scene scene = floorScene("bare-floor", directional({0.3f, -1, 0.2f}, 60));
+  RenderSettings settings;
+  settings.size = {320, 240};
+  FrameRunner runner(scene, settings);
+  const TechniqueRun result = runRayCast(runner);
+  int receivers = 0, dark = 0;
+  for (float v : result.visibility.pixels)
+    if (!std::isnan(v)) {
+      ++receivers;
+      dark += v < 0.5f;
+    }
+  EXPECT_GT(receivers, 10000);
+  EXPECT_EQ(dark, 0);
+}
+
+// --- Agreement with the shadow volumes ------------------------------------------------
+
+struct Agreement {
+  int receivers = 0, disagree = 0, nearBoundary = 0, raycastDark = 0;
+  double percent() const { return receivers ? 100.0 * disagree / receivers : 0.0; }
+};
+
+bool isReceiver(const ImageF& v, int x, int y) { return !std::isnan(v.at(x, y)); }
+
+// True when a receiver within `radius` pixels (Chebyshev) has the other state in `v`.
+bool nearBoundary(const ImageF& v, int x, int y, int radius) {
+  const bool state = v.at(x, y) >= 0.5f;
+  for (int dy = -radius; dy <= radius; ++dy)
+    for (int dx = -radius; dx <= radius; ++dx) {
+      const int nx = x + dx, ny = y + dy;
+      if (nx < 0 || ny < 0 || nx >= v.width || ny >= v.height || !isReceiver(v, nx, ny)) continue;
+      if ((v.at(nx, ny) >= 0.5f) != state) return true;
+    }
+  return false;
+}
+
+ImageF differenceImage(const ImageF& raycast, const ImageF& volumes) {
+  // Grey = agree (dark/lit), red = only the ray caster lit, blue = only the volumes lit.
+  ImageF image;
+  image.width = raycast.width;
+  image.height = raycast.height;
+  image.channels = 3;
+  image.pixels.assign(std::size_t(image.width) * image.height * 3, 0.0f);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      float* rgb = &image.pixels[(std::size_t(y) * image.width + x) * 3];
+      if (!isReceiver(raycast, x, y)) continue;
+      const bool a = raycast.at(x, y) >= 0.5f, b = volumes.at(x, y) >= 0.5f;
+      if (a == b) {
+        rgb[0] = rgb[1] = rgb[2] = a ? 0.7f : 0.25f;
+      } else {
+        rgb[a ? 0 : 2] = 1.0f;
+      }
+    }
+  return image;
+}
+
+Agreement compare(const Scene& scene, glm::ivec2 size) {
+  RenderSettings settings;
+  settings.size = size;
+  FrameRunner runner(scene, settings);
+  const TechniqueRun raycast = runRayCast(runner);
+  const TechniqueRun volumes = runVolumes(runner);
+  Agreement a;
+  for (int y = 0; y < size.y; ++y)
+    for (int x = 0; x < size.x; ++x) {
+      const bool r = isReceiver(raycast.visibility, x, y), v = isReceiver(volumes.visibility, x, y);
+      EXPECT_EQ(r, v) << "receiver masks differ at " << x << "," << y;
+      if (!r || !v) continue;
+      ++a.receivers;
+      const bool litR = raycast.visibility.at(x, y) >= 0.5f, litV = volumes.visibility.at(x, y) >= 0.5f;
+      a.raycastDark += !litR;
+      if (litR == litV) continue;
+      ++a.disagree;
+      a.nearBoundary += nearBoundary(raycast.visibility, x, y, 1) || nearBoundary(volumes.visibility, x, y, 1);
+    }
+  char line[256];
+  std::snprintf(line, sizeof line, "%d of %d receiver pixels disagree (%.4f%%), %d of them within 1 px of a boundary",
+                a.disagree, a.receivers, a.percent(), a.nearBoundary);
+  std::cout << "[ raycast  ] " << scene.name << " " << size.x << "x" << size.y << ": " << line << "\n";
+  ::testing::Test::RecordProperty("agreement_" + scene.name, line);
+  // Images for people when asked ($TESTBED_RAYCAST_DUMP=folder) or when the check fails.
+  const char* dump = std::getenv("TESTBED_RAYCAST_DUMP");
+  if (dump || a.percent() > 0.1) {
+    const std::string base = std::string(dump ? dump : ::testing::TempDir().c_str()) + "/raycast_" + scene.name;
+    writeImage(base + "_raycast.png", runner.shade(raycast.visibility));
+    writeImage(base + "_volumes.png", runner.shade(volumes.visibility));
+    writeImage(base + "_difference.png", differenceImage(raycast.visibility, volumes.visibility));
+    std::cout << "[ raycast  ] images: " << base << "_{raycast,volumes,difference}.png\n";
+  }
+  return a;
+}
+
+class RayCastAgreement : public ::testing::Test {
+ protected:
+  void SetUp() override { test::sharedContext(); }
+  // DESIGN.md: the two ground truths agree on ≥ 99.9% of receiver pixels.
+  static void expectAgreement(const Scene& scene, glm::ivec2 size = {640, 360}) {
+    const Agreement a = compare(scene, size);
+    EXPECT_GT(a.receivers, size.x * size.y / 10);
+    EXPECT_GT(a.raycastDark, 0) << "no shadow at all: the comparison would prove nothing";
+    EXPECT_LE(a.percent(), 0.1) << scene.name << ": " << a.disagree << " of " << a.receivers << " pixels";
+  }
+  static Scene bundled(const std::string& name) {
+    return loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/" + name + ".json");
+  }
+};
+
+TEST_F(RayCastAgreement, BoxOverPlaneDirectional) { expectAgreement(boxOverPlane(directional({0, -1, 0}))); }
+TEST_F(RayCastAgreement, BoxOverPlaneSpot) { expectAgreement(boxOverPlane(spot({0, 40, 0}, 60))); }
+TEST_F(RayCastAgreement, SphereOverPlaneOblique) { expectAgreement(sphereOverPlane(directional({0.6f, -1, 0.3f}, 60))); }
+TEST_F(RayCastAgreement, BundledBunny) { expectAgreement(bundled("bunny")); }
+TEST_F(RayCastAgreement, BundledWall) { expectAgreement(bundled("wall")); }
+TEST_F(RayCastAgreement, BundledFence) { expectAgreement(bundled("fence")); }
+TEST_F(RayCastAgreement, BundledDragonSun) { expectAgreement(bundled("dragon_sun")); }
+
+}  // namespace
+}  // namespace testbed

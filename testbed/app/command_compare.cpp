@@ -1,0 +1,154 @@
+// `testbed compare`: every chosen technique and the ground truth on one scene → per
+// technique T.{png,exr,json} with its error block, metrics.json (all records), report.md,
+// grid.png and speed_vs_error.svg.
+#include <iostream>
+#include <sstream>
+
+#include "groundtruth/shadow_volumes.h"
+#include "testbed/app/commands.h"
+#include "testbed/core/error.h"
+#include "testbed/gl/context.h"
+#include "testbed/metrics/metrics.h"
+#include "testbed/report/comparison.h"
+
+namespace testbed {
+namespace {
+
+// "all" or "a,b,c" → registered techniques, `sm` first (every ratio is taken against it).
+std::vector<const RegisteredTechnique*> chooseTechniques(const std::string& list) {
+  std::vector<const RegisteredTechnique*> chosen{&findTechnique("sm")};
+  auto add = [&](const RegisteredTechnique& t) {
+    for (const auto* c : chosen)
+      if (c->info->id == t.info->id) return;
+    chosen.push_back(&t);
+  };
+  if (list == "all") {
+    static const auto all = registeredTechniques();
+    for (const auto& t : all) add(t);
+    return chosen;
+  }
+  std::stringstream items(list);
+  for (std::string id; std::getline(items, id, ',');) {
+    if (id.empty()) throw InputError("--techniques: empty name in '" + list + "'");
+    add(findTechnique(id));
+  }
+  return chosen;
+}
+
+// --set technique.name=value, routed to each technique's own parameters.
+std::map<std::string, std::map<std::string, std::string>> routeAssignments(const std::vector<std::string>& sets) {
+  std::map<std::string, std::map<std::string, std::string>> byTechnique;
+  for (const auto& text : sets) {
+    auto [name, value] = splitAssignment(text);
+    const auto dot = name.find('.');
+    if (dot == std::string::npos || dot == 0)
+      throw InputError("--set " + text + ": compare needs technique.name=value (e.g. pcf.kernel=5)");
+    findTechnique(name.substr(0, dot));
+    if (!byTechnique[name.substr(0, dot)].emplace(name.substr(dot + 1), value).second)
+      throw InputError("--set " + text + ": set twice");
+  }
+  return byTechnique;
+}
+
+}  // namespace
+
+CommandRunner addCompareCommand(CLI::App& app) {
+  struct Options {
+    CommonOptions common;
+    std::string scene, techniques = "all";
+    std::vector<std::string> assignments;
+    int areaSamples = 0;
+  };
+  auto options = std::make_shared<Options>();
+  auto* command = app.add_subcommand("compare", "rank techniques against the ground truth on one scene");
+  command->add_option("--scene", options->scene, "scene file (JSON)")->required();
+  command->add_option("--techniques", options->techniques, "all, or a comma-separated list")->capture_default_str();
+  command->add_option("--set", options->assignments, "technique.parameter=value (repeatable)")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  command->add_option("--area-samples", options->areaSamples,
+                      "also render the area-light reference with N samples (gives soft_rmse)");
+  options->common.addTo(*command);
+
+  return [command, options]() {
+    if (!command->parsed()) return -1;
+    const RenderSettings settings = options->common.settings();
+    const auto techniques = chooseTechniques(options->techniques);
+    const auto assignments = routeAssignments(options->assignments);
+    std::vector<ParameterSet> parameters;
+    for (const auto* t : techniques) {
+      const auto it = assignments.find(t->info->id);
+      parameters.push_back(resolveParameters(t->info->id, t->info->parameters,
+                                             it == assignments.end() ? std::map<std::string, std::string>{} : it->second));
+    }
+    if (options->areaSamples < 0 || options->areaSamples > 4096)
+      throw InputError("--area-samples: " + std::to_string(options->areaSamples) + " is outside 0..4096");
+    const Scene scene = loadScene(options->scene);
+    auto context = createContext(options->common.backend);
+    validateSettings(settings);
+    const std::string backend = context->description();
+    FrameRunner runner(scene, settings);
+    OutputFiles files(options->common.out);
+    const std::size_t steps = techniques.size() + 1 + (options->areaSamples > 0);
+    std::size_t step = 0;
+    auto progress = [&](const std::string& what) {
+      std::cerr << "[" << ++step << "/" << steps << "] " << what << " on " << scene.name << std::flush;
+    };
+    auto writeOutputs = [&](const std::string& id, const TechniqueRun& run, const nlohmann::json& record) {
+      files.writeImage(id + ".png", runner.shade(run.visibility));
+      files.writeImage(id + ".exr", run.visibility);
+      files.writeText(id + ".json", record.dump(2) + "\n");
+    };
+
+    Comparison comparison;
+    comparison.scene = scene.name;
+    nlohmann::json all = nlohmann::json::array();
+
+    progress("groundtruth (shadow volumes)");
+    const TechniqueRun truth = runner.run(shadowVolumeGroundTruth(), resolveParameters("groundtruth", {}, {}));
+    comparison.groundTruth = makeRecord(truth, runner, backend);
+    comparison.groundTruth["error"] = toJson(computeErrorMetrics(truth.visibility, truth.visibility));
+    comparison.groundTruthVisibility = truth.visibility;
+    writeOutputs("groundtruth", truth, comparison.groundTruth);
+    all.push_back(comparison.groundTruth);
+    std::cerr << ": " << truth.times.totalMs << " ms\n";
+
+    std::optional<TechniqueRun> area;
+    if (options->areaSamples > 0) {
+      progress("area-light reference (" + std::to_string(options->areaSamples) + " samples)");
+      const auto& reference = areaLightReference();
+      area = runner.run(reference, resolveParameters("area", reference.info->parameters,
+                                                     {{"area_samples", std::to_string(options->areaSamples)}}));
+      nlohmann::json record = makeRecord(*area, runner, backend);
+      writeOutputs("area", *area, record);
+      all.push_back(record);
+      std::cerr << ": " << area->times.totalMs << " ms\n";
+    }
+
+    for (std::size_t i = 0; i < techniques.size(); ++i) {
+      const std::string& id = techniques[i]->info->id;
+      progress(id);
+      const TechniqueRun run = runner.run(*techniques[i], parameters[i]);
+      const ErrorMetrics error =
+          computeErrorMetrics(run.visibility, truth.visibility, area ? &area->visibility : nullptr);
+      nlohmann::json record = makeRecord(run, runner, backend);
+      record["error"] = toJson(error);
+      writeOutputs(id, run, record);
+      all.push_back(record);
+      comparison.entries.push_back({record, run.visibility, runner.shade(run.visibility),
+                                    errorHeatMap(run.visibility, truth.visibility)});
+      std::cerr << ": " << run.times.totalMs << " ms (" << ratioToBaseline(comparison, record) << "x sm), mismatch "
+                << error.mismatchPct << "%, boundary " << error.boundaryMean << " px\n";
+    }
+    files.writeText("metrics.json", all.dump(2) + "\n");
+    files.writeText("report.md", reportMarkdown(comparison));
+    files.writeImage("grid.png", comparisonGrid(comparison));
+    files.writeText("speed_vs_error.svg", speedVsErrorSvg(comparison));
+    files.commit();
+    std::cerr << "testbed: wrote report.md, grid.png, speed_vs_error.svg, metrics.json to " << options->common.out
+              << "\n";
+    return 0;
+  };
+}
+
+}  // namespace testbed

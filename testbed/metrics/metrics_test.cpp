@@ -1,0 +1,281 @@
+// Error metrics on hand-made images whose answers are known by construction.
+#include "testbed/metrics/metrics.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace testbed {
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+ImageF makeImage(int w, int h, const std::function<float(int, int)>& value) {
+  ImageF image{w, h, 1, {}};
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) image.pixels.push_back(value(x, y));
+  return image;
+}
+
+ImageF pad(const ImageF& image, int border, float value) {
+  return makeImage(image.width + 2 * border, image.height + 2 * border, [&](int x, int y) {
+    const int ix = x - border, iy = y - border;
+    if (ix < 0 || iy < 0 || ix >= image.width || iy >= image.height) return value;
+    return image.at(ix, iy);
+  });
+}
+
+bool inSquare(int x, int y, int lo, int hi) { return x >= lo && x < hi && y >= lo && y < hi; }
+
+// 60x60, ground-truth shadow square [10,50)^2. Its far-from-boundary part (distance to the
+// inner boundary ring > 8) is [19,40]^2 = 22^2 = 484 pixels; the centre [25,35)^2 (100
+// pixels) lies inside it.
+ImageF squareShadowGt() { return makeImage(60, 60, [](int x, int y) { return inSquare(x, y, 10, 50) ? 0.f : 1.f; }); }
+ImageF squareShadowWithLitCentre(float centre = 1.f) {
+  return makeImage(60, 60, [=](int x, int y) {
+    return inSquare(x, y, 25, 35) ? centre : inSquare(x, y, 10, 50) ? 0.f : 1.f;
+  });
+}
+
+void expectSame(const ErrorMetrics& a, const ErrorMetrics& b) {
+  EXPECT_DOUBLE_EQ(a.mismatchPct, b.mismatchPct);
+  EXPECT_DOUBLE_EQ(a.edgeMismatchPct, b.edgeMismatchPct);
+  EXPECT_DOUBLE_EQ(a.rmse, b.rmse);
+  EXPECT_DOUBLE_EQ(a.leakPct, b.leakPct);
+  EXPECT_DOUBLE_EQ(a.overestimationPct, b.overestimationPct);
+  EXPECT_DOUBLE_EQ(a.boundaryMean, b.boundaryMean);
+  EXPECT_DOUBLE_EQ(a.boundaryP95, b.boundaryP95);
+  EXPECT_EQ(a.softRmse.has_value(), b.softRmse.has_value());
+  if (a.softRmse && b.softRmse) {
+    EXPECT_DOUBLE_EQ(*a.softRmse, *b.softRmse);
+  }
+  EXPECT_EQ(a.receivers, b.receivers);
+  EXPECT_EQ(a.gtBoundaryPixels, b.gtBoundaryPixels);
+}
+
+TEST(Metrics, IdenticalImagesGiveZeros) {
+  const ImageF gt = makeImage(40, 30, [](int x, int y) { return (x - 20) * (x - 20) + (y - 15) * (y - 15) < 64 ? 0.f : 1.f; });
+  const ErrorMetrics m = computeErrorMetrics(gt, gt);
+  EXPECT_EQ(m.mismatchPct, 0);
+  EXPECT_EQ(m.edgeMismatchPct, 0);
+  EXPECT_EQ(m.rmse, 0);
+  EXPECT_EQ(m.leakPct, 0);
+  EXPECT_EQ(m.overestimationPct, 0);
+  EXPECT_EQ(m.boundaryMean, 0);
+  EXPECT_EQ(m.boundaryP95, 0);
+  EXPECT_FALSE(m.softRmse.has_value());
+  EXPECT_EQ(m.receivers, 40 * 30);
+  EXPECT_GT(m.gtBoundaryPixels, 0);
+}
+
+TEST(Metrics, ShiftedHalfPlaneEdge) {
+  // GT lit for x < 20: boundary pixels are columns 19 and 20. Technique lit for x < 23:
+  // boundary columns 22 and 23. Per row the pooled distances are 22->20: 2, 23->20: 3,
+  // 19->22: 3, 20->22: 2, so mean 2.5 and p95 3 (index 37 of 20 twos and 20 threes).
+  const ImageF gt = makeImage(40, 10, [](int x, int) { return x < 20 ? 1.f : 0.f; });
+  const ImageF v = makeImage(40, 10, [](int x, int) { return x < 23 ? 1.f : 0.f; });
+  const ErrorMetrics m = computeErrorMetrics(v, gt);
+  EXPECT_EQ(m.gtBoundaryPixels, 20);
+  EXPECT_DOUBLE_EQ(m.mismatchPct, 100.0 * 30 / 400);  // columns 20..22
+  // Band: columns within 3 of 19 or 20 are 16..23 (80 pixels), 30 of them wrong.
+  EXPECT_DOUBLE_EQ(m.edgeMismatchPct, 100.0 * 30 / 80);
+  EXPECT_DOUBLE_EQ(m.rmse, std::sqrt(30.0 / 400));
+  EXPECT_DOUBLE_EQ(m.boundaryMean, 2.5);
+  EXPECT_DOUBLE_EQ(m.boundaryP95, 3.0);
+  EXPECT_EQ(m.leakPct, 0);  // the wrong strip is within the 8 px margin
+  EXPECT_EQ(m.overestimationPct, 0);
+
+  // One-pixel shift: distances 0, 1, 1, 0 per row.
+  const ErrorMetrics one = computeErrorMetrics(makeImage(40, 10, [](int x, int) { return x < 21 ? 1.f : 0.f; }), gt);
+  EXPECT_DOUBLE_EQ(one.boundaryMean, 0.5);
+  EXPECT_DOUBLE_EQ(one.boundaryP95, 1.0);
+  EXPECT_DOUBLE_EQ(one.mismatchPct, 100.0 * 10 / 400);
+}
+
+TEST(Metrics, HorizontalEdgeGivesTheSameAsVertical) {
+  const ImageF gt = makeImage(10, 40, [](int, int y) { return y < 20 ? 1.f : 0.f; });
+  const ImageF v = makeImage(10, 40, [](int, int y) { return y < 23 ? 1.f : 0.f; });
+  const ErrorMetrics m = computeErrorMetrics(v, gt);
+  EXPECT_DOUBLE_EQ(m.mismatchPct, 7.5);
+  EXPECT_DOUBLE_EQ(m.edgeMismatchPct, 37.5);
+  EXPECT_DOUBLE_EQ(m.boundaryMean, 2.5);
+  EXPECT_DOUBLE_EQ(m.boundaryP95, 3.0);
+}
+
+TEST(Metrics, BoundaryP95IsNearestRank) {
+  // 40x3, edge at column 20 in both; the technique adds a lit pair at (30,1),(31,1) in
+  // the shadow. Pool (n = 20): 12 zeros from the shared edge, then the pair's 8 boundary
+  // pixels at their column minus 20: 9, 10, 10, 10, 11, 11, 11, 12. Nearest rank
+  // ceil(0.95 * 20) - 1 = 18 picks 11, not the maximum 12.
+  const ImageF gt = makeImage(40, 3, [](int x, int) { return x < 20 ? 1.f : 0.f; });
+  const ImageF v = makeImage(40, 3, [](int x, int y) { return x < 20 || (y == 1 && (x == 30 || x == 31)) ? 1.f : 0.f; });
+  const ErrorMetrics m = computeErrorMetrics(v, gt);
+  EXPECT_DOUBLE_EQ(m.boundaryP95, 11.0);
+  EXPECT_DOUBLE_EQ(m.boundaryMean, 84.0 / 20);
+  EXPECT_DOUBLE_EQ(m.mismatchPct, 100.0 * 2 / 120);
+}
+
+TEST(Metrics, LeakIsShareOfFarShadowPixels) {
+  const ErrorMetrics m = computeErrorMetrics(squareShadowWithLitCentre(), squareShadowGt());
+  EXPECT_DOUBLE_EQ(m.leakPct, 100.0 * 100 / 484);
+  EXPECT_EQ(m.overestimationPct, 0);
+  EXPECT_DOUBLE_EQ(m.mismatchPct, 100.0 * 100 / 3600);
+  EXPECT_EQ(m.edgeMismatchPct, 0);  // the centre is 15 px from the boundary
+  EXPECT_DOUBLE_EQ(m.rmse, std::sqrt(100.0 / 3600));
+}
+
+TEST(Metrics, OverestimationIsShareOfFarLitPixels) {
+  const ImageF gt = makeImage(60, 60, [](int x, int y) { return inSquare(x, y, 10, 50) ? 1.f : 0.f; });
+  const ImageF v = makeImage(60, 60, [](int x, int y) {
+    return inSquare(x, y, 25, 35) ? 0.f : inSquare(x, y, 10, 50) ? 1.f : 0.f;
+  });
+  const ErrorMetrics m = computeErrorMetrics(v, gt);
+  EXPECT_DOUBLE_EQ(m.overestimationPct, 100.0 * 100 / 484);
+  EXPECT_EQ(m.leakPct, 0);
+  EXPECT_DOUBLE_EQ(m.mismatchPct, 100.0 * 100 / 3600);
+}
+
+TEST(Metrics, LeakThresholdIsStrictButMismatchIsNot) {
+  // v = 0.5 counts as lit for mismatch (>= 0.5) but not as a leak (> 0.5).
+  const ErrorMetrics m = computeErrorMetrics(squareShadowWithLitCentre(0.5f), squareShadowGt());
+  EXPECT_DOUBLE_EQ(m.mismatchPct, 100.0 * 100 / 3600);
+  EXPECT_EQ(m.leakPct, 0);
+}
+
+TEST(Metrics, PixelsWithinMarginDoNotCount) {
+  // A wrong strip at columns 12..14 inside the shadow square: 2..4 px from the boundary.
+  const ImageF v = makeImage(60, 60, [](int x, int y) {
+    if (x >= 12 && x <= 14 && y >= 20 && y < 40) return 1.f;
+    return inSquare(x, y, 10, 50) ? 0.f : 1.f;
+  });
+  const ErrorMetrics m = computeErrorMetrics(v, squareShadowGt());
+  EXPECT_DOUBLE_EQ(m.mismatchPct, 100.0 * 60 / 3600);
+  EXPECT_EQ(m.leakPct, 0);
+  // With a 1 px margin the far shadow region is [12,47]^2 = 1296 pixels and the strip counts.
+  const ErrorMetrics tight = computeErrorMetrics(v, squareShadowGt(), nullptr, MetricOptions{1, 3});
+  EXPECT_DOUBLE_EQ(tight.leakPct, 100.0 * 60 / 1296);
+}
+
+TEST(Metrics, NaNBackgroundIsIgnored) {
+  const ImageF gt = squareShadowGt(), v = squareShadowWithLitCentre();
+  const ImageF reference = makeImage(60, 60, [](int, int) { return 0.5f; });
+  const ErrorMetrics plain = computeErrorMetrics(v, gt, &reference);
+  // The technique's value outside the receivers does not matter, NaN or not.
+  for (float outside : {kNaN, 0.7f}) {
+    const ImageF refPadded = pad(reference, 5, kNaN);
+    const ErrorMetrics padded = computeErrorMetrics(pad(v, 5, outside), pad(gt, 5, kNaN), &refPadded);
+    expectSame(plain, padded);
+  }
+}
+
+TEST(Metrics, SoftRmseOnlyWithReference) {
+  const ImageF gt = squareShadowGt();
+  EXPECT_FALSE(computeErrorMetrics(gt, gt).softRmse.has_value());
+  const ImageF reference = makeImage(60, 60, [](int, int) { return 0.5f; });
+  const ErrorMetrics m = computeErrorMetrics(gt, gt, &reference);
+  ASSERT_TRUE(m.softRmse.has_value());
+  EXPECT_DOUBLE_EQ(*m.softRmse, 0.5);  // binary values, every one 0.5 away
+  EXPECT_EQ(m.rmse, 0);
+}
+
+TEST(Metrics, JsonHasExactlyTheContractKeys) {
+  const ErrorMetrics m = computeErrorMetrics(makeImage(40, 10, [](int x, int) { return x < 23 ? 1.f : 0.f; }),
+                                             makeImage(40, 10, [](int x, int) { return x < 20 ? 1.f : 0.f; }));
+  const nlohmann::json j = toJson(m);
+  std::set<std::string> keys;
+  for (const auto& item : j.items()) keys.insert(item.key());
+  EXPECT_EQ(keys, (std::set<std::string>{"mismatch_pct", "edge_mismatch_pct", "rmse", "leak_pct",
+                                         "overestimation_pct", "boundary_px", "soft_rmse"}));
+  std::set<std::string> boundaryKeys;
+  for (const auto& item : j.at("boundary_px").items()) boundaryKeys.insert(item.key());
+  EXPECT_EQ(boundaryKeys, (std::set<std::string>{"mean", "p95"}));
+  EXPECT_DOUBLE_EQ(j.at("mismatch_pct").get<double>(), 7.5);
+  EXPECT_DOUBLE_EQ(j.at("boundary_px").at("mean").get<double>(), 2.5);
+  EXPECT_DOUBLE_EQ(j.at("boundary_px").at("p95").get<double>(), 3.0);
+  EXPECT_TRUE(j.at("soft_rmse").is_null());
+
+  ErrorMetrics withSoft = m;
+  withSoft.softRmse = 0.25;
+  EXPECT_DOUBLE_EQ(toJson(withSoft).at("soft_rmse").get<double>(), 0.25);
+}
+
+TEST(Metrics, BadInputsThrow) {
+  const ImageF gt = makeImage(8, 6, [](int x, int) { return x < 4 ? 1.f : 0.f; });
+  EXPECT_THROW(computeErrorMetrics(makeImage(8, 7, [](int, int) { return 1.f; }), gt), std::invalid_argument);
+  const ImageF badRef = makeImage(6, 8, [](int, int) { return 1.f; });
+  EXPECT_THROW(computeErrorMetrics(gt, gt, &badRef), std::invalid_argument);
+  ImageF rgb{8, 6, 3, std::vector<float>(8 * 6 * 3, 1.f)};
+  EXPECT_THROW(computeErrorMetrics(rgb, gt), std::invalid_argument);
+  EXPECT_THROW(errorHeatMap(makeImage(7, 6, [](int, int) { return 1.f; }), gt), std::invalid_argument);
+
+  ImageF lost = gt;
+  lost.pixels[2 * 8 + 3] = kNaN;  // pixel (3, 2)
+  try {
+    computeErrorMetrics(lost, gt);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("(3, 2)"), std::string::npos) << e.what();
+  }
+  const ImageF empty = makeImage(8, 6, [](int, int) { return kNaN; });
+  EXPECT_THROW(computeErrorMetrics(empty, empty), std::invalid_argument);
+}
+
+TEST(Metrics, OneSideWithoutBoundaryGivesDiagonal) {
+  // 30x40: diagonal 50.
+  const ImageF lit = makeImage(30, 40, [](int, int) { return 1.f; });
+  const ImageF square = makeImage(30, 40, [](int x, int y) { return inSquare(x, y, 5, 25) ? 0.f : 1.f; });
+  for (const auto& [v, gt] : {std::pair{&square, &lit}, std::pair{&lit, &square}}) {
+    const ErrorMetrics m = computeErrorMetrics(*v, *gt);
+    EXPECT_DOUBLE_EQ(m.boundaryMean, 50.0);
+    EXPECT_DOUBLE_EQ(m.boundaryP95, 50.0);
+  }
+  // Neither has a boundary: 0, and with no GT boundary every receiver is "far".
+  const ImageF dark = makeImage(30, 40, [](int, int) { return 0.f; });
+  const ErrorMetrics m = computeErrorMetrics(dark, lit);
+  EXPECT_EQ(m.boundaryMean, 0);
+  EXPECT_EQ(m.boundaryP95, 0);
+  EXPECT_EQ(m.gtBoundaryPixels, 0);
+  EXPECT_DOUBLE_EQ(m.mismatchPct, 100.0);
+  EXPECT_DOUBLE_EQ(m.overestimationPct, 100.0);
+  EXPECT_EQ(m.edgeMismatchPct, 0);
+}
+
+TEST(Metrics, HeatMapColoursEachClass) {
+  // Row 0: background, agreeing lit, agreeing shadow, filtered shadow (gt 0, v 0.25).
+  // Row 1: false lit, false shadow, filtered lit (gt 1, v 0.75), background with NaN v.
+  const float gtValues[] = {kNaN, 1, 0, 0, 0, 1, 1, kNaN};
+  const float vValues[] = {1, 1, 0, 0.25f, 1, 0.2f, 0.75f, kNaN};
+  ImageF gt{4, 2, 1, {std::begin(gtValues), std::end(gtValues)}};
+  ImageF v{4, 2, 1, {std::begin(vValues), std::end(vValues)}};
+  const ImageF heat = errorHeatMap(v, gt);
+  ASSERT_EQ(heat.width, 4);
+  ASSERT_EQ(heat.height, 2);
+  ASSERT_EQ(heat.channels, 3);
+  auto expectColour = [&](int x, int y, std::array<float, 3> c) {
+    for (int k = 0; k < 3; ++k) EXPECT_FLOAT_EQ(heat.at(x, y, k), c[k]) << x << "," << y << " channel " << k;
+  };
+  auto mix = [](std::array<float, 3> a, std::array<float, 3> b, float t) {
+    return std::array<float, 3>{(1 - t) * a[0] + t * b[0], (1 - t) * a[1] + t * b[1], (1 - t) * a[2] + t * b[2]};
+  };
+  expectColour(0, 0, kHeatBackground);
+  expectColour(1, 0, kHeatLit);
+  expectColour(2, 0, kHeatShadow);
+  expectColour(3, 0, mix(kHeatShadow, kHeatFalseLit, 0.25f));
+  expectColour(0, 1, kHeatFalseLit);
+  expectColour(1, 1, kHeatFalseShadow);
+  expectColour(2, 1, mix(kHeatLit, kHeatFalseShadow, 0.25f));
+  expectColour(3, 1, kHeatBackground);
+  // The classes are told apart.
+  EXPECT_NE(kHeatBackground, kHeatShadow);
+  EXPECT_NE(kHeatShadow, kHeatLit);
+}
+
+}  // namespace
+}  // namespace testbed

@@ -1,0 +1,41 @@
+#pragma once
+// What `testbed compare` reports: one entry per technique next to the ground truth, turned
+// into report.md (a table), grid.png (images, error heat maps, close-ups) and
+// speed_vs_error.svg. The figures all come from the records; nothing is typed in.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "testbed/io/image_io.h"
+
+namespace testbed {
+
+struct ComparisonEntry {
+  nlohmann::json record;  // the technique's record with its "error" block
+  ImageF visibility;      // one channel, NaN background
+  ImageF shaded;          // RGB, for people
+  ImageF heatMap;         // RGB error classes against the ground truth
+};
+
+struct Comparison {
+  std::string scene;
+  nlohmann::json groundTruth;      // the ground truth's record (its cost is reported too)
+  ImageF groundTruthVisibility;
+  std::vector<ComparisonEntry> entries;  // the first is the baseline `sm`
+};
+
+// GPU time ratio of a record to the baseline's (sm in the same run).
+double ratioToBaseline(const Comparison& comparison, const nlohmann::json& record);
+
+std::string reportMarkdown(const Comparison& comparison);
+// Rows: technique | shaded image | error heat map | close-up of its worst boundary window.
+ImageF comparisonGrid(const Comparison& comparison);
+// GPU time ratio to sm (x) against boundary_px.mean (y), one labelled point per technique.
+std::string speedVsErrorSvg(const Comparison& comparison);
+
+// The top-left corner of the `window`² square with the most mismatching receiver pixels
+// (binary at 0.5) between `visibility` and `groundTruth`; ties go to the first in scan order.
+std::pair<int, int> worstWindow(const ImageF& visibility, const ImageF& groundTruth, int window);
+
+}  // namespace testbed
