@@ -45,6 +45,7 @@ CommandRunner addRenderCommand(CLI::App& app) {
     files.writeImage(id + ".png", runner.shade(run.visibility));
     files.writeImage(id + ".exr", run.visibility);
     files.writeText(id + ".json", makeRecord(run, runner, context->description()).dump(2) + "\n");
+    for (const auto& [name, image] : run.debugImages) files.writeImage(id + "." + name + ".png", image);
     files.commit();
     std::cerr << "testbed: wrote " << id << ".png, .exr, .json to " << options->common.out << " (GPU "
               << run.times.totalMs << " ms, " << run.memoryBytes << " bytes)\n";

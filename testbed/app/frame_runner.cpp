@@ -141,6 +141,7 @@ TechniqueRun FrameRunner::run(const RegisteredTechnique& technique, const Parame
   result.cpuMs = median(cpu);
   result.memoryBytes = session.memoryBytes();
   result.visibility = session.visibility();
+  result.debugImages = session.technique().debugImages();
   return result;
 }
 

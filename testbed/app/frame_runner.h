@@ -41,6 +41,7 @@ struct TechniqueRun {
   PassTimes times;           // medians over the timed frames
   double cpuMs = 0;          // median wall time of a frame, glFinish to glFinish
   std::uint64_t memoryBytes = 0;
+  std::vector<std::pair<std::string, ImageF>> debugImages;  // ShadowTechnique::debugImages()
 };
 
 class FrameRunner;
@@ -60,6 +61,7 @@ class TechniqueSession {
   std::uint64_t memoryBytes() const { return ledger_.bytes(); }
   // Reads the last frame's visibility: one channel, top-down, NaN where no receiver.
   ImageF visibility() const;
+  const ShadowTechnique& technique() const { return *instance_; }
 
  private:
   FrameRunner& runner_;

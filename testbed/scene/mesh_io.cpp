@@ -207,12 +207,14 @@ void checkPly(const fs::path& file, std::uint64_t size) {
     fail(file, "corrupt PLY header: expected \"format <type> <version>\" on the second line");
   }
   std::vector<PlyElement> elements;
+  bool afterFaces = false;
   while (true) {
     if (!(in >> keyword)) fail(file, "corrupt PLY header: no end_header");
     if (keyword == "end_header") break;
     if (keyword == "comment") {
       std::getline(in, line);
     } else if (keyword == "element") {
+      afterFaces = afterFaces || (!elements.empty() && elements.back().name == "face");
       std::string name, count;
       in >> name >> count;
       elements.push_back({name, 0, {}});
@@ -228,12 +230,21 @@ void checkPly(const fs::path& file, std::uint64_t size) {
         in >> c >> line;  // entry type, then the name
         property.countBytes = plyTypeSize(b);
         property.valueBytes = plyTypeSize(c);
+        // OpenMesh reads any other list as one scalar and loses its place in the file; it
+        // stops reading after the face element, so lists after that do no harm.
+        const bool faceList =
+            elements.back().name == "face" &&
+            (line == "vertex_indices" || line == "vertex_index" || line == "texcoord");
+        if (!faceList && !afterFaces) {
+          fail(file, "list property " + quote(line) + " in element " + quote(elements.back().name) +
+                         " is not supported");
+        }
       } else {
         property.valueBytes = std::max(plyTypeSize(a), plyTypeSize(b));  // either order occurs
       }
       if (property.valueBytes == 0 || (a == "list" && property.countBytes == 0)) {
-        fail(file, "corrupt PLY header: unknown property type in element " +
-                       quote(elements.back().name));
+        fail(file,
+             "corrupt PLY header: unknown property type in element " + quote(elements.back().name));
       }
       elements.back().properties.push_back(property);
     }
@@ -272,8 +283,7 @@ void checkPly(const fs::path& file, std::uint64_t size) {
         if (ascii) {
           if (p.countBytes) {
             if (!(in >> token)) bad("the file ends early");
-            if (!parseCount(token, values))
-              bad("expected a list length, got " + quote(token));
+            if (!parseCount(token, values)) bad("expected a list length, got " + quote(token));
           }
           for (std::uint64_t v = 0; v < values; ++v) {
             if (!(in >> token)) bad("the file ends early");

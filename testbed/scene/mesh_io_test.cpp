@@ -230,6 +230,13 @@ TEST_F(MeshIo, PlyHeadersThatCrashOrHangOpenMeshThrow) {
   // An unreadable version number leaves OpenMesh re-reading the same keyword forever.
   expectError(write("version.ply", "ply\nformat ascii x.0\nelement vertex 1\nend_header\n0\n"),
               "expected \"format <type> <version>\"");
+  // OpenMesh would read this list as one value and misread everything after it.
+  expectError(write("vlist.ply",
+                    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                    "property float z\nproperty list uchar float extra\nelement face 1\n"
+                    "property list uchar int vertex_indices\nend_header\n"
+                    "0 0 0 1 5\n1 0 0 1 5\n0 1 0 1 5\n3 0 1 2\n"),
+              "list property \"extra\" in element \"vertex\" is not supported");
 }
 
 TEST_F(MeshIo, PlyListLongerThanTheFileThrows) {

@@ -258,6 +258,9 @@ TEST_F(SceneParser, AssetNamesComeFromTheAssetDirectory) {
 TEST_F(SceneParser, EmptyAssetVariableFallsBackToTheBuildDefault) {
   const ScopedEnv env("TESTBED_ASSET_DIR", "");
   EXPECT_FALSE(assetDirectory().empty());
+#ifdef TESTBED_DEFAULT_ASSET_DIR
+  EXPECT_EQ(assetDirectory(), fs::path(TESTBED_DEFAULT_ASSET_DIR));
+#endif
 }
 
 TEST_F(SceneParser, BrokenMeshNamesSceneKeyAndMeshFile) {

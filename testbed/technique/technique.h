@@ -12,6 +12,7 @@
 
 #include "testbed/gl/objects.h"
 #include "testbed/gl/pass_timer.h"
+#include "testbed/io/image_io.h"
 #include "testbed/render/depth_format.h"
 #include "testbed/scene/scene.h"
 #include "testbed/scene/view.h"
@@ -60,6 +61,10 @@ class ShadowTechnique {
   // Renders one frame. Every GPU pass runs inside a `timer.scope("name")`. GL objects may
   // be (re)allocated here; their bytes are booked as this technique's memory.
   virtual void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) = 0;
+  // Colour images for people, e.g. a revectorization technique's discontinuity space
+  // (`--set debug=discontinuity`): name → RGB image (top-down) of the last frame. `render`
+  // writes each as T.<name>.png. Empty unless a parameter asked for them.
+  virtual std::vector<std::pair<std::string, ImageF>> debugImages() const { return {}; }
 };
 
 using TechniqueFactory = std::function<std::unique_ptr<ShadowTechnique>()>;
