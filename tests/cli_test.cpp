@@ -607,4 +607,54 @@ TEST(CliRender, OutThatIsAFileFailsAndLeavesItAlone) {
   EXPECT_EQ(filesIn(tmp.path()), std::vector<std::string>{"taken"});
 }
 
+// compare: the ground truth first (its error against itself all zeros), every chosen
+// technique with a complete error block, and the report files people look at.
+TEST(CliCompare, WritesRecordsReportGridAndPlot) {
+  TempDir tmp;
+  const fs::path out = tmp / "cmp";
+  const RunResult run = runTestbed({"compare", "--scene", bundledScene("wall.json").string(), "--techniques", "sm",
+                                    "--size", "160x90", "--shadow-map", "256", "--area-samples", "4", "--out",
+                                    out.string()});
+  ASSERT_EQ(run.exitCode, 0) << run.describe();
+  for (const char* file : {"metrics.json", "report.md", "grid.png", "speed_vs_error.svg", "groundtruth.exr",
+                           "groundtruth.json", "area.exr", "sm.exr", "sm.json", "sm.png"})
+    EXPECT_TRUE(fs::exists(out / file)) << file;
+  const json all = json::parse(readFile(out / "metrics.json"));
+  ASSERT_TRUE(all.is_array());
+  ASSERT_EQ(all.size(), 3u);  // groundtruth, area, sm
+  EXPECT_EQ(all[0]["technique"], "groundtruth");
+  for (const char* key : {"mismatch_pct", "edge_mismatch_pct", "rmse", "leak_pct", "overestimation_pct"})
+    EXPECT_EQ(all[0]["error"][key], 0.0) << key;
+  EXPECT_EQ(all[0]["error"]["boundary_px"]["mean"], 0.0);
+  const json& sm = all[2];
+  EXPECT_EQ(sm["technique"], "sm");
+  for (const char* key : {"mismatch_pct", "edge_mismatch_pct", "rmse", "leak_pct", "overestimation_pct", "soft_rmse"})
+    EXPECT_TRUE(sm["error"][key].is_number()) << key;
+  EXPECT_GT(sm["error"]["mismatch_pct"].get<double>(), 0.0) << "a 256² map on 160x90 pixels is not exact";
+  const std::string report = readFile(out / "report.md");
+  EXPECT_NE(report.find("| technique | GPU ms | × sm |"), std::string::npos);
+  EXPECT_NE(report.find("| `sm` |"), std::string::npos);
+  EXPECT_NE(readFile(out / "speed_vs_error.svg").find("<circle"), std::string::npos);
+  const testbed::ImageF grid = testbed::readImage(out / "grid.png");
+  EXPECT_GT(grid.width, 480);
+  EXPECT_EQ(grid.channels, 3);
+  // Progress: one line per step on stderr.
+  EXPECT_NE(run.err.find("[1/3] groundtruth"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("[3/3] sm"), std::string::npos) << run.err;
+}
+
+TEST(CliCompare, RoutesParametersPerTechniqueAndRejectsUnknownOnes) {
+  TempDir tmp;
+  const RunResult bad = runTestbed({"compare", "--scene", bundledScene("wall.json").string(), "--techniques", "sm",
+                                    "--set", "bias=0.1", "--out", (tmp / "x").string()});
+  EXPECT_EQ(bad.exitCode, 2) << bad.describe();
+  EXPECT_NE(bad.err.find("technique.name=value"), std::string::npos) << bad.err;
+  const RunResult unknown = runTestbed({"compare", "--scene", bundledScene("wall.json").string(), "--techniques",
+                                        "sm,nope", "--out", (tmp / "y").string()});
+  EXPECT_EQ(unknown.exitCode, 2) << unknown.describe();
+  EXPECT_NE(unknown.err.find("nope"), std::string::npos) << unknown.err;
+  EXPECT_FALSE(fs::exists(tmp / "x"));
+  EXPECT_FALSE(fs::exists(tmp / "y"));
+}
+
 }  // namespace
