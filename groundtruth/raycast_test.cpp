@@ -218,6 +218,64 @@ TEST_F(RayCastAnalytic, SphereStraightDownCastsACircleOfItsRadius) { checkSphere
 
 TEST_F(RayCastAnalytic, SphereUnderObliqueLightCastsAnEllipse) { checkSphereShadow({0.6f, -1, 0.3f}); }
 
+// Whether the ray from q towards the light (along −d) meets the box [lo, hi] (slab test).
+bool rayMeetsBox(glm::vec3 q, glm::vec3 towardsLight, glm::vec3 lo, glm::vec3 hi) {
+  float enter = 0, leave = INFINITY;
+  for (int c = 0; c < 3; ++c) {
+    if (towardsLight[c] == 0) {
+      if (q[c] < lo[c] || q[c] > hi[c]) return false;
+      continue;
+    }
+    float t0 = (lo[c] - q[c]) / towardsLight[c], t1 = (hi[c] - q[c]) / towardsLight[c];
+    if (t0 > t1) std::swap(t0, t1);
+    enter = std::max(enter, t0);
+    leave = std::min(leave, t1);
+  }
+  return enter < leave;
+}
+
+TEST_F(RayCastAnalytic, BoxStandingOnTheFloorShadowsRightUpToItsBase) {
+  // Contact: the shadow starts at the box's base edge, so tnear must not open a lit gap
+  // there. Expected answers come from a slab test per floor point; points whose answer
+  // changes within two pixels' footprint (the boundary) are skipped.
+  const LightDesc light = directional({0.5f, -1, 0.3f}, 60);
+  Scene scene = floorScene("box-on-floor", light);
+  const glm::vec3 lo(-4, 0, -3), hi(4, 6, 3);
+  scene.objects.push_back({"box", translated(makeBox(8, 6, 6), {0, 3, 0})});
+  RenderSettings settings;
+  settings.size = {640, 480};
+  FrameRunner runner(scene, settings);
+  const TechniqueRun result = runRayCast(runner);
+  const ImageF& positions = runner.positions();
+  const glm::vec3 towardsLight = -light.direction;
+  int checked = 0, shadowChecked = 0, touching = 0, mismatches = 0;
+  for (int y = 0; y < positions.height; ++y)
+    for (int x = 0; x < positions.width; ++x) {
+      if (!covered(positions, x, y)) continue;
+      const glm::vec3 p = positionAt(positions, x, y);
+      if (std::abs(p.y) > 1e-3f || std::max(std::abs(p.x), std::abs(p.z)) > 39) continue;
+      const float band = 2 * footprint(positions, x, y);
+      const bool expectShadow = rayMeetsBox(p, towardsLight, lo, hi);
+      bool stable = true;
+      for (const glm::vec3 offset : {glm::vec3(band, 0, 0), glm::vec3(-band, 0, 0), glm::vec3(0, 0, band),
+                                     glm::vec3(0, 0, -band)})
+        stable = stable && rayMeetsBox(p + offset, towardsLight, lo, hi) == expectShadow;
+      if (!stable) continue;
+      ++checked;
+      shadowChecked += expectShadow;
+      // Shadowed floor within half a unit of the base, on the side away from the light.
+      touching += expectShadow && (p.x > hi.x && p.x < hi.x + 0.5f);
+      const bool shadow = result.visibility.at(x, y) < 0.5f;
+      if (shadow != expectShadow && mismatches++ < 5)
+        ADD_FAILURE() << "pixel " << x << "," << y << " at (" << p.x << ", " << p.z << ")"
+                      << (shadow ? " shadowed" : " lit");
+    }
+  EXPECT_GT(checked, 100000);
+  EXPECT_GT(shadowChecked, 1000);  // much of the shadow lies behind the box from the camera
+  EXPECT_GT(touching, 50);
+  EXPECT_EQ(mismatches, 0);
+}
+
 TEST_F(RayCastAnalytic, OpenOccluderBlocksFromItsBackSide) {
   // A floating quad facing up (+y) over the floor, light straight down: every shadow ray
   // meets its back side, which must block as much as a front side does.
@@ -360,6 +418,11 @@ class RayCastAgreement : public ::testing::Test {
 
 TEST_F(RayCastAgreement, BoxOverPlaneDirectional) { expectAgreement(boxOverPlane(directional({0, -1, 0}))); }
 TEST_F(RayCastAgreement, BoxOverPlaneSpot) { expectAgreement(boxOverPlane(spot({0, 40, 0}, 60))); }
+TEST_F(RayCastAgreement, BoxStandingOnTheFloor) {
+  Scene scene = floorScene("box-on-floor", directional({0.5f, -1, 0.3f}, 60));
+  scene.objects.push_back({"box", translated(makeBox(8, 6, 6), {0, 3, 0})});
+  expectAgreement(scene);
+}
 TEST_F(RayCastAgreement, SphereOverPlaneOblique) { expectAgreement(sphereOverPlane(directional({0.6f, -1, 0.3f}, 60))); }
 TEST_F(RayCastAgreement, BundledBunny) { expectAgreement(bundled("bunny")); }
 TEST_F(RayCastAgreement, BundledWall) { expectAgreement(bundled("wall")); }

@@ -129,8 +129,13 @@ class ShadowVolumes final : public ShadowTechnique {
 
   // Builds the volumes of every object for one light sample and uploads them.
   GLsizei upload(const Scene& scene, const VolumeLight& light) {
+    if (topologyOf_ != &scene) {  // adjacency is gathered once per scene
+      topologies_.clear();
+      for (const auto& object : scene.objects) topologies_.push_back(volumeTopology(object.mesh));
+      topologyOf_ = &scene;
+    }
     vertices_.clear();
-    for (const auto& object : scene.objects) appendShadowVolume(object.mesh, light, vertices_);
+    for (const auto& topology : topologies_) appendShadowVolume(topology, light, vertices_);
     const std::size_t bytes = vertices_.size() * sizeof(VolumeVertex);
     if (bytes > buffer_.bytes()) {
       buffer_ = Buffer::create(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -195,6 +200,8 @@ class ShadowVolumes final : public ShadowTechnique {
   Framebuffer framebuffer_;
   GLuint target_ = 0;
   std::vector<VolumeVertex> vertices_;
+  std::vector<VolumeTopology> topologies_;
+  const Scene* topologyOf_ = nullptr;
 };
 
 }  // namespace

@@ -22,21 +22,37 @@ bool isClosed(const TriMesh& mesh) {
   return true;
 }
 
-VolumeStats appendShadowVolume(const TriMesh& mesh, const VolumeLight& light, std::vector<VolumeVertex>& out) {
-  VolumeStats stats;
-  const bool closed = isClosed(mesh);
-  (closed ? stats.closedMeshes : stats.openMeshes) = 1;
+VolumeTopology volumeTopology(const TriMesh& mesh) {
+  VolumeTopology topology;
+  topology.closed = isClosed(mesh);
+  topology.corners.reserve(mesh.n_faces() * 3);
+  topology.neighbour.reserve(mesh.n_faces() * 3);
+  for (const auto face : mesh.faces())
+    for (const auto he : face.halfedges()) {
+      topology.corners.push_back(toGlm(mesh.point(he.from())));
+      const auto opposite = he.opp().face();
+      topology.neighbour.push_back(opposite.is_valid() ? opposite.idx() : -1);
+    }
+  return topology;
+}
 
-  // Facing of each face, from its vertices (not stored normals) so orientation is exact.
-  std::vector<Facing> facing(mesh.n_faces(), kNone);
-  for (const auto face : mesh.faces()) {
-    auto fv = face.vertices().begin();
-    const glm::vec3 a = toGlm(mesh.point(*fv++)), b = toGlm(mesh.point(*fv++)), c = toGlm(mesh.point(*fv));
+VolumeStats appendShadowVolume(const TriMesh& mesh, const VolumeLight& light, std::vector<VolumeVertex>& out) {
+  return appendShadowVolume(volumeTopology(mesh), light, out);
+}
+
+VolumeStats appendShadowVolume(const VolumeTopology& mesh, const VolumeLight& light, std::vector<VolumeVertex>& out) {
+  VolumeStats stats;
+  (mesh.closed ? stats.closedMeshes : stats.openMeshes) = 1;
+  const std::size_t faces = mesh.corners.size() / 3;
+
+  // Facing of each face, from its corners (not stored normals) so orientation is exact.
+  std::vector<Facing> facing(faces, kNone);
+  for (std::size_t f = 0; f < faces; ++f) {
+    const glm::vec3 &a = mesh.corners[3 * f], &b = mesh.corners[3 * f + 1], &c = mesh.corners[3 * f + 2];
     const glm::vec3 normal = glm::cross(b - a, c - a);
     if (normal == glm::vec3(0)) continue;
     const glm::vec3 towardsLight = light.directional ? -light.direction : light.position - (a + b + c) / 3.0f;
-    const float d = glm::dot(normal, towardsLight);
-    facing[face.idx()] = d > 0 ? kTowards : kAway;  // edge-on faces block nothing either way
+    facing[f] = glm::dot(normal, towardsLight) > 0 ? kTowards : kAway;  // edge-on faces block nothing
   }
 
   // A point extruded away from the light to infinity.
@@ -49,18 +65,12 @@ VolumeStats appendShadowVolume(const TriMesh& mesh, const VolumeLight& light, st
     out.push_back({r, plane});
   };
 
-  for (const auto face : mesh.faces()) {
-    const Facing f = facing[face.idx()];
-    if (f == kNone || (closed && f == kAway)) continue;
+  for (std::size_t f = 0; f < faces; ++f) {
+    const Facing facingHere = facing[f];
+    if (facingHere == kNone || (mesh.closed && facingHere == kAway)) continue;
     // Corners ordered so the triangle is counter-clockwise seen from the light.
-    glm::vec3 corner[3];
-    OpenMesh::SmartHalfedgeHandle edges[3];
-    int i = 0;
-    for (const auto he : face.halfedges()) {
-      corner[i] = toGlm(mesh.point(he.from()));
-      edges[i++] = he;
-    }
-    if (f == kAway) std::swap(corner[1], corner[2]);
+    glm::vec3 corner[3] = {mesh.corners[3 * f], mesh.corners[3 * f + 1], mesh.corners[3 * f + 2]};
+    if (facingHere == kAway) std::swap(corner[1], corner[2]);
     const glm::vec4 capPlane = planeThrough(glm::cross(corner[1] - corner[0], corner[2] - corner[0]), corner[0]);
     emit(glm::vec4(corner[0], 1), glm::vec4(corner[1], 1), glm::vec4(corner[2], 1), capPlane);
     ++stats.capTriangles;
@@ -69,12 +79,12 @@ VolumeStats appendShadowVolume(const TriMesh& mesh, const VolumeLight& light, st
       ++stats.capTriangles;
     }
     // Side quads on the region's boundary: the neighbour is missing or faces otherwise.
-    for (const auto he : edges) {
-      const auto opposite = he.opp().face();
-      if (opposite.is_valid() && facing[opposite.idx()] == f) continue;
+    for (int i = 0; i < 3; ++i) {
+      const int other = mesh.neighbour[3 * f + i];
+      if (other >= 0 && facing[std::size_t(other)] == facingHere) continue;
       // Edge a → b in the light-facing winding.
-      glm::vec3 a = toGlm(mesh.point(he.from())), b = toGlm(mesh.point(he.to()));
-      if (f == kAway) std::swap(a, b);
+      glm::vec3 a = mesh.corners[3 * f + i], b = mesh.corners[3 * f + (i + 1) % 3];
+      if (facingHere == kAway) std::swap(a, b);
       const glm::vec3 away = light.directional ? light.direction : a - light.position;
       const glm::vec4 plane = planeThrough(glm::cross(a - b, away), a);
       const glm::vec4 a4(a, 1), b4(b, 1), aInf = atInfinity(a), bInf = atInfinity(b);

@@ -36,8 +36,18 @@ struct VolumeStats {
   std::size_t capTriangles = 0, sideQuads = 0, closedMeshes = 0, openMeshes = 0;
 };
 
-// Appends the volume triangles of `mesh` (world space) to `out`, every triangle wound
+// The light-independent part, gathered once per mesh: corners and edge neighbours of every
+// face in flat arrays, so a new light (or area-light sample) costs one pass over them.
+struct VolumeTopology {
+  std::vector<glm::vec3> corners;  // 3 per face, in the mesh's winding
+  std::vector<int> neighbour;      // 3 per face: the face across edge (i, i+1), or -1
+  bool closed = true;
+};
+VolumeTopology volumeTopology(const TriMesh& mesh);
+
+// Appends the volume triangles of a mesh (world space) to `out`, every triangle wound
 // counter-clockwise seen from outside its volume.
+VolumeStats appendShadowVolume(const VolumeTopology& mesh, const VolumeLight& light, std::vector<VolumeVertex>& out);
 VolumeStats appendShadowVolume(const TriMesh& mesh, const VolumeLight& light, std::vector<VolumeVertex>& out);
 
 // True when every edge of the mesh has two faces (no boundary): then away-facing regions

@@ -126,17 +126,23 @@ TechniqueRun FrameRunner::run(const RegisteredTechnique& technique, const Parame
   std::vector<TechniqueSession::Frame> frames;
   for (int i = 0; i < settings_.repeat; ++i) frames.push_back(session.renderFrame());
 
-  std::vector<double> totals, cpu;
+  std::vector<double> totals, wallTotals, cpu;
   for (const auto& f : frames) {
     totals.push_back(f.times.totalMs);
+    wallTotals.push_back(f.times.wallTotalMs);
     cpu.push_back(f.cpuMs);
   }
   result.times.totalMs = median(totals);
+  result.times.wallTotalMs = median(wallTotals);
   result.times.order = frames.front().times.order;
   for (const auto& name : result.times.order) {
-    std::vector<double> values;
-    for (const auto& f : frames) values.push_back(f.times.passMs.at(name));
+    std::vector<double> values, wall;
+    for (const auto& f : frames) {
+      values.push_back(f.times.passMs.at(name));
+      wall.push_back(f.times.wallPassMs.at(name));
+    }
     result.times.passMs[name] = median(values);
+    result.times.wallPassMs[name] = median(wall);
   }
   result.cpuMs = median(cpu);
   result.memoryBytes = session.memoryBytes();
@@ -169,8 +175,11 @@ ImageF FrameRunner::shade(const ImageF& visibility) const {
 }
 
 nlohmann::json makeRecord(const TechniqueRun& run, const FrameRunner& runner, const std::string& backend) {
-  nlohmann::json passes = nlohmann::json::object();
-  for (const auto& name : run.times.order) passes[name] = run.times.passMs.at(name);
+  nlohmann::json passes = nlohmann::json::object(), wallPasses = nlohmann::json::object();
+  for (const auto& name : run.times.order) {
+    passes[name] = run.times.passMs.at(name);
+    wallPasses[name] = run.times.wallPassMs.at(name);
+  }
   const RenderSettings& s = runner.settings();
   return {
       {"technique", run.id},
@@ -180,6 +189,7 @@ nlohmann::json makeRecord(const TechniqueRun& run, const FrameRunner& runner, co
       {"depth_format", depthFormatName(s.depthFormat)},
       {"params", run.params},
       {"gpu_ms", {{"total", run.times.totalMs}, {"passes", passes}}},
+      {"wall_ms", {{"total", run.times.wallTotalMs}, {"passes", wallPasses}}},
       {"cpu_ms", run.cpuMs},
       {"gbuffer_ms", runner.gbufferMs()},
       {"repeat", s.repeat},

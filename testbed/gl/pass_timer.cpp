@@ -22,6 +22,7 @@ PassTimer::Scope::Scope(PassTimer& timer, std::string name) : timer_(timer) {
   timer.open_ = true;
   Entry entry{std::move(name), timer.takeQuery()};
   glFinish();
+  start_ = std::chrono::steady_clock::now();
   glBeginQuery(GL_TIME_ELAPSED, entry.query);
   timer.entries_.push_back(std::move(entry));
 }
@@ -29,6 +30,8 @@ PassTimer::Scope::Scope(PassTimer& timer, std::string name) : timer_(timer) {
 PassTimer::Scope::~Scope() {
   glEndQuery(GL_TIME_ELAPSED);
   glFinish();
+  timer_.entries_.back().wallMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
   timer_.open_ = false;
 }
 
@@ -41,6 +44,8 @@ PassTimes PassTimer::resolve() {
     if (!times.passMs.count(entry.name)) times.order.push_back(entry.name);
     times.passMs[entry.name] += ms;
     times.totalMs += ms;
+    times.wallPassMs[entry.name] += entry.wallMs;
+    times.wallTotalMs += entry.wallMs;
   }
   entries_.clear();
   used_ = 0;
