@@ -111,7 +111,7 @@ CommandRunner addCompareCommand(CLI::App& app) {
     comparison.groundTruthVisibility = truth.visibility;
     writeOutputs("groundtruth", truth, comparison.groundTruth);
     all.push_back(comparison.groundTruth);
-    std::cerr << ": " << truth.times.totalMs << " ms\n";
+    std::cerr << ": " << frameTimeMs(comparison.groundTruth) << " ms\n";
 
     std::optional<TechniqueRun> area;
     if (options->areaSamples > 0) {
@@ -122,7 +122,7 @@ CommandRunner addCompareCommand(CLI::App& app) {
       nlohmann::json record = makeRecord(*area, runner, backend);
       writeOutputs("area", *area, record);
       all.push_back(record);
-      std::cerr << ": " << area->times.totalMs << " ms\n";
+      std::cerr << ": " << frameTimeMs(record) << " ms\n";
     }
 
     for (std::size_t i = 0; i < techniques.size(); ++i) {
@@ -137,7 +137,7 @@ CommandRunner addCompareCommand(CLI::App& app) {
       all.push_back(record);
       comparison.entries.push_back({record, run.visibility, runner.shade(run.visibility),
                                     errorHeatMap(run.visibility, truth.visibility)});
-      std::cerr << ": " << run.times.totalMs << " ms (" << ratioToBaseline(comparison, record) << "x sm), mismatch "
+      std::cerr << ": " << frameTimeMs(record) << " ms (" << ratioToBaseline(comparison, record) << "x sm), mismatch "
                 << error.mismatchPct << "%, boundary " << error.boundaryMean << " px\n";
     }
     files.writeText("metrics.json", all.dump(2) + "\n");

@@ -44,11 +44,12 @@ CommandRunner addRenderCommand(CLI::App& app) {
     const std::string& id = technique.info->id;
     files.writeImage(id + ".png", runner.shade(run.visibility));
     files.writeImage(id + ".exr", run.visibility);
-    files.writeText(id + ".json", makeRecord(run, runner, context->description()).dump(2) + "\n");
+    const nlohmann::json record = makeRecord(run, runner, context->description());
+    files.writeText(id + ".json", record.dump(2) + "\n");
     for (const auto& [name, image] : run.debugImages) files.writeImage(id + "." + name + ".png", image);
     files.commit();
-    std::cerr << "testbed: wrote " << id << ".png, .exr, .json to " << options->common.out << " (GPU "
-              << run.times.totalMs << " ms, " << run.memoryBytes << " bytes)\n";
+    std::cerr << "testbed: wrote " << id << ".png, .exr, .json to " << options->common.out << " ("
+              << frameTimeMs(record) << " ms, " << run.memoryBytes << " bytes)\n";
     return 0;
   };
 }

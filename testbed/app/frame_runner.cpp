@@ -62,7 +62,7 @@ FrameRunner::FrameRunner(const Scene& scene, const RenderSettings& settings)
     auto scope = timer.scope("gbuffer");
     gbuffer_.render(geometry_, cameraTransforms(scene.camera, aspectOf(settings.size)));
   }
-  gbufferMs_ = timer.resolve().totalMs;
+  gbufferTimes_ = timer.resolve();
   checkGlError("rendering the G-buffer");
   positions_ = readTopDown(gbuffer_.position(), 4);
   normals_ = readTopDown(gbuffer_.shadingNormal(), 3);
@@ -174,6 +174,20 @@ ImageF FrameRunner::shade(const ImageF& visibility) const {
   return image;
 }
 
+TimingSource timingSourceFor(std::string_view backend) {
+  for (const char* software : {"llvmpipe", "softpipe", "swrast"})
+    if (backend.find(software) != std::string_view::npos) return TimingSource::Wall;
+  return TimingSource::Gpu;
+}
+
+double frameTimeMs(const PassTimes& times, TimingSource source) {
+  return source == TimingSource::Wall ? times.wallTotalMs : times.totalMs;
+}
+
+double frameTimeMs(const nlohmann::json& record) {
+  return record.at(record.at("timing") == "wall" ? "wall_ms" : "gpu_ms").at("total").get<double>();
+}
+
 nlohmann::json makeRecord(const TechniqueRun& run, const FrameRunner& runner, const std::string& backend) {
   nlohmann::json passes = nlohmann::json::object(), wallPasses = nlohmann::json::object();
   for (const auto& name : run.times.order) {
@@ -191,7 +205,8 @@ nlohmann::json makeRecord(const TechniqueRun& run, const FrameRunner& runner, co
       {"gpu_ms", {{"total", run.times.totalMs}, {"passes", passes}}},
       {"wall_ms", {{"total", run.times.wallTotalMs}, {"passes", wallPasses}}},
       {"cpu_ms", run.cpuMs},
-      {"gbuffer_ms", runner.gbufferMs()},
+      {"gbuffer_ms", frameTimeMs(runner.gbufferTimes(), timingSourceFor(backend))},
+      {"timing", timingSourceFor(backend) == TimingSource::Wall ? "wall" : "gpu"},
       {"repeat", s.repeat},
       {"triangles", runner.triangleCount()},
       {"memory_bytes", run.memoryBytes},

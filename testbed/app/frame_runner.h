@@ -85,7 +85,7 @@ class FrameRunner {
 
   const Scene& scene() const { return scene_; }
   const RenderSettings& settings() const { return settings_; }
-  double gbufferMs() const { return gbufferMs_; }
+  const PassTimes& gbufferTimes() const { return gbufferTimes_; }
   std::size_t triangleCount() const { return geometry_.triangleCount(); }
   // G-buffer readback, top-down: xyz world position, w coverage.
   const ImageF& positions() const { return positions_; }
@@ -98,9 +98,18 @@ class FrameRunner {
   RenderSettings settings_;
   GpuScene geometry_;
   GBuffer gbuffer_;
-  double gbufferMs_ = 0;
+  PassTimes gbufferTimes_;
   ImageF positions_, normals_;  // G-buffer readback for shading, top-down
 };
+
+// Which measure is a frame's time for ratios, reports and benchmarks: GL timer queries on
+// a GPU; wall time between glFinish calls on a software rasterizer (llvmpipe, softpipe),
+// whose queries miss the vertex work it does at draw time (see gl/pass_timer.h).
+enum class TimingSource { Gpu, Wall };
+TimingSource timingSourceFor(std::string_view backendDescription);
+double frameTimeMs(const PassTimes& times, TimingSource source);
+// The same from a record: its "timing" field names the measure.
+double frameTimeMs(const nlohmann::json& record);
 
 // The record of one run (README "Record"); `error` is null until compared with ground truth.
 nlohmann::json makeRecord(const TechniqueRun& run, const FrameRunner& runner, const std::string& backend);

@@ -6,6 +6,8 @@
 
 #include "testbed/report/comparison.h"
 
+#include "testbed/app/frame_runner.h"
+
 namespace testbed {
 namespace {
 
@@ -59,7 +61,7 @@ std::string label(const Comparison& c, const ComparisonEntry& entry) {
   const auto& e = r["error"];
   std::ostringstream text;
   text.precision(3);
-  text << r["technique"].get<std::string>() << "   " << r["gpu_ms"]["total"].get<double>() << " ms ("
+  text << r["technique"].get<std::string>() << "   " << frameTimeMs(r) << " ms ("
        << ratioToBaseline(c, r) << "x sm)   mismatch " << e["mismatch_pct"].get<double>() << "%   boundary "
        << e["boundary_px"]["mean"].get<double>() << " px   leak " << e["leak_pct"].get<double>() << "%";
   return text.str();

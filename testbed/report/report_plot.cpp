@@ -73,7 +73,7 @@ std::string speedVsErrorSvg(const Comparison& c) {
   svg << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << W - left - right << "\" height=\""
       << H - top - bottom << "\" fill=\"none\" stroke=\"black\"/>\n"
       << "<text x=\"" << (left + W - right) / 2 << "\" y=\"" << H - 18
-      << "\" text-anchor=\"middle\">GPU time / sm's (same run)</text>\n"
+      << "\" text-anchor=\"middle\">frame time / sm's (same run)</text>\n"
       << "<text transform=\"translate(18," << (top + H - bottom) / 2
       << ") rotate(-90)\" text-anchor=\"middle\">boundary_px.mean (pixels)</text>\n";
   for (const auto& p : points) {
