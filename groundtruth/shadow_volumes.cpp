@@ -1,6 +1,7 @@
 #include "groundtruth/shadow_volumes.h"
 
 #include <cmath>
+#include <iostream>
 
 #include "groundtruth/volume_geometry.h"
 #include "testbed/render/gbuffer_pass.h"
@@ -97,6 +98,10 @@ class ShadowVolumes final : public ShadowTechnique {
     const auto lights = lightSamples(in.scene.light, in.light, samples_);
     const glm::vec3 camera = glm::vec3(glm::inverse(in.camera.view)[3]);
     for (std::size_t s = 0; s < lights.size(); ++s) {
+      // Long area-light references show how far they are (one line, rewritten in place).
+      if (lights.size() >= 16 && (s % (lights.size() / 8) == 0 || s + 1 == lights.size()))
+        std::cerr << "\r  area-light sample " << s + 1 << "/" << lights.size() << (s + 1 == lights.size() ? "\n" : "")
+                  << std::flush;
       const GLsizei vertexCount = upload(in.scene, lights[s]);
       {
         auto scope = timer.scope("volumes");

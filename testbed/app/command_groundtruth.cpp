@@ -1,9 +1,11 @@
-// `testbed groundtruth`: the exact visibility of a scene → groundtruth.{png,exr,json}, and
-// with --area-samples N the area-light reference → area.{png,exr,json}.
+// `testbed groundtruth`: the exact visibility of a scene → groundtruth.{png,exr,json} by
+// shadow volumes (or raycast.{png,exr,json} with --method raycast, the independent Embree
+// cross-check), and with --area-samples N the area-light reference → area.{png,exr,json}.
 #include <iostream>
 
 #include <nlohmann/json.hpp>
 
+#include "groundtruth/raycast.h"
 #include "groundtruth/shadow_volumes.h"
 #include "testbed/app/commands.h"
 #include "testbed/core/error.h"
@@ -20,17 +22,21 @@ CommandRunner addGroundTruthCommand(CLI::App& app) {
   auto options = std::make_shared<Options>();
   auto* command = app.add_subcommand("groundtruth", "render the exact (and area-light) reference");
   command->add_option("--scene", options->scene, "scene file (JSON)")->required();
-  command->add_option("--method", options->method, "volumes (stencil shadow volumes)")->capture_default_str();
+  command->add_option("--method", options->method, "volumes (stencil shadow volumes) or raycast (Embree)")
+      ->capture_default_str();
   command->add_option("--area-samples", options->areaSamples, "also render the area-light reference with N samples");
   options->common.addTo(*command);
 
   return [command, options]() {
     if (!command->parsed()) return -1;
     const RenderSettings settings = options->common.settings();
-    if (options->method != "volumes")
-      throw InputError("--method: unknown method '" + options->method + "' (available: volumes)");
+    if (options->method != "volumes" && options->method != "raycast")
+      throw InputError("--method: unknown method '" + options->method + "' (available: volumes, raycast)");
+    if (options->areaSamples < 0 || options->areaSamples > 4096)
+      throw InputError("--area-samples: " + std::to_string(options->areaSamples) + " is outside 0..4096");
     std::vector<std::pair<const RegisteredTechnique*, ParameterSet>> runs;
-    runs.emplace_back(&shadowVolumeGroundTruth(), resolveParameters("groundtruth", {}, {}));
+    const RegisteredTechnique& exact = options->method == "raycast" ? rayCastGroundTruth() : shadowVolumeGroundTruth();
+    runs.emplace_back(&exact, resolveParameters(exact.info->id, {}, {}));
     if (options->areaSamples != 0) {
       const auto& area = areaLightReference();
       runs.emplace_back(&area, resolveParameters("area", area.info->parameters,
