@@ -429,5 +429,92 @@ TEST_F(RayCastAgreement, BundledWall) { expectAgreement(bundled("wall")); }
 TEST_F(RayCastAgreement, BundledFence) { expectAgreement(bundled("fence")); }
 TEST_F(RayCastAgreement, BundledDragonSun) { expectAgreement(bundled("dragon_sun")); }
 
+// Hard cases (issue 3): none may crash, and both ground truths must still agree.
+
+TEST_F(RayCastAgreement, CameraInsideAShadowVolume) {
+  // The camera sits under a wide slab, inside its volume, looking out across the floor:
+  // the depth-fail counting must not depend on the camera being outside.
+  Scene scene = floorScene("camera-in-volume", directional({0.2f, -1, 0.1f}, 60));
+  scene.objects.push_back({"slab", translated(makeBox(30, 1, 30), {0, 14, 0})});
+  scene.objects.push_back({"post", translated(makeBox(2, 6, 2), {8, 3, 9})});
+  scene.camera.eye = {0, 6, -2};
+  scene.camera.target = {14, 0, 20};
+  expectAgreement(scene);
+}
+
+TEST_F(RayCastAgreement, LightAlmostGrazingTheReceiver) {
+  // 2° above the floor: long shadows, receivers nearly edge-on to the light.
+  Scene scene = floorScene("grazing-light", directional({1, -std::tan(glm::radians(2.0f)), 0.15f}, 60));
+  scene.objects.push_back({"box", translated(makeBox(4, 4, 4), {-20, 2, 0})});
+  scene.objects.push_back({"sphere", translated(makeSphere(2, 32, 16), {-10, 2.5f, -12})});
+  expectAgreement(scene);
+}
+
+TEST_F(RayCastAgreement, OpenMeshAndMeshWithHoles) {
+  // An open occluder (a plane turned upside down: it faces away from the light) and
+  // CGAL's elephant with holes (a mesh with boundary loops).
+  Scene scene = floorScene("open-meshes", spot({5, 45, -5}, 70));
+  TriMesh lid = makePlane(10, 8, 4);
+  for (auto v : lid.vertices()) {
+    auto& p = lid.point(v);
+    p = {p[0] - 8, 9 - p[1], -p[2] + 6};  // mirrored in y: normal now points down
+  }
+  lid.update_normals();
+  scene.objects.push_back({"lid", lid});
+  Scene elephant = loadScene(std::string(TESTBED_TEST_DATA_DIR) + "/scenes/elephant_with_holes.json");
+  for (auto& object : elephant.objects) scene.objects.push_back(std::move(object));
+  expectAgreement(scene);
+}
+
+TEST_F(RayCastAgreement, CoplanarAndDegenerateTriangles) {
+  Scene scene = floorScene("coplanar-degenerate", directional({0.3f, -1, 0.2f}, 60));
+  // Two overlapping coplanar quads (z-fighting occluders) and a quad lying on the floor.
+  scene.objects.push_back({"quad-a", translated(makePlane(10, 10), {-4, 8, 0})});
+  scene.objects.push_back({"quad-b", translated(makePlane(10, 10), {1, 8, 3})});
+  scene.objects.push_back({"decal", translated(makePlane(6, 6), {12, 0, -10})});
+  // Degenerate triangles: zero area with distinct vertices, and a needle sliver.
+  TriMesh junk;
+  const auto a = junk.add_vertex({0, 5, 0}), b = junk.add_vertex({4, 5, 0}), c = junk.add_vertex({8, 5, 0});
+  const auto d = junk.add_vertex({0, 5, 4}), e = junk.add_vertex({8, 5.0001f, 4});
+  junk.add_face(a, b, c);
+  junk.add_face(a, c, e);
+  junk.add_face(a, e, d);
+  junk.request_face_normals();
+  junk.request_vertex_normals();
+  junk.update_normals();
+  scene.objects.push_back({"degenerate", junk});
+  expectAgreement(scene);
+}
+
+TEST_F(RayCastAgreement, OccluderCrossingTheNearPlane) {
+  // A bar passes just under the camera, through its near plane (1 unit): the part the
+  // camera clips away still casts its shadow onto the floor.
+  Scene scene = floorScene("near-plane", spot({0, 30, -45}, 90));
+  scene.light.target = {0, 0, -10};
+  scene.camera.eye = {0, 12, -30};
+  scene.camera.target = {0, 0, 0};
+  scene.camera.nearPlane = 1.0f;
+  scene.objects.push_back({"bar", translated(makeBox(10, 0.5f, 3), {2, 11.2f, -29.2f})});
+  scene.objects.push_back({"box", translated(makeBox(5, 5, 5), {6, 2.5f, 4})});
+  expectAgreement(scene);
+}
+
+TEST_F(RayCastAgreement, VeryLargeDepthRange) {
+  // Light and camera with near 0.01 and far 1e5 over a scene a thousand units wide.
+  Scene scene;
+  scene.name = "large-depth-range";
+  scene.camera.eye = {700, 850, -750};
+  scene.camera.target = {0, 0, 0};
+  scene.camera.nearPlane = 0.01f;
+  scene.camera.farPlane = 1e5f;
+  scene.light = spot({300, 1500, 200}, 60);
+  scene.light.nearPlane = 0.01f;
+  scene.light.farPlane = 1e5f;
+  scene.objects.push_back({"plane", makePlane(2000, 2000)});
+  scene.objects.push_back({"box", translated(makeBox(200, 200, 200), {0, 300, 0})});
+  scene.objects.push_back({"sphere", translated(makeSphere(60, 48, 24), {-350, 60, 250})});
+  expectAgreement(scene);
+}
+
 }  // namespace
 }  // namespace testbed
