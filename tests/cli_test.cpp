@@ -632,7 +632,7 @@ TEST(CliCompare, WritesRecordsReportGridAndPlot) {
     EXPECT_TRUE(sm["error"][key].is_number()) << key;
   EXPECT_GT(sm["error"]["mismatch_pct"].get<double>(), 0.0) << "a 256² map on 160x90 pixels is not exact";
   const std::string report = readFile(out / "report.md");
-  EXPECT_NE(report.find("| technique | GPU ms | × sm |"), std::string::npos);
+  EXPECT_NE(report.find("| technique | GPU ms (queries) | wall ms | × sm |"), std::string::npos);
   EXPECT_NE(report.find("| `sm` |"), std::string::npos);
   EXPECT_NE(readFile(out / "speed_vs_error.svg").find("<circle"), std::string::npos);
   const testbed::ImageF grid = testbed::readImage(out / "grid.png");
