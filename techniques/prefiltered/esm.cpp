@@ -1,0 +1,33 @@
+// `esm`: exponential shadow maps (Annen et al. 2008): exp(c·z) filtered; visibility
+// exp(−c·t)·E[exp(c·z)], clamped to [0, 1].
+#include "techniques/prefiltered/prefiltered_technique.h"
+#include "testbed/technique/registry.h"
+
+namespace testbed {
+namespace {
+
+class ExponentialShadowMap final : public PrefilteredTechnique {
+ public:
+  static const TechniqueInfo& staticInfo() {
+    // R32F as in the paper. exp(c) at the far plane must stay below FLT_MAX (3.4e38 =
+    // exp(88.7)), hence c ≤ 88; the paper's c = 80 gives exp(80) ≈ 5.5e34.
+    static const TechniqueInfo info = familyInfo(
+        "esm", "Annen, Mertens, Seidel, Flerackers & Kautz, Exponential shadow maps, GI 2008",
+        "exponential shadow maps: exp(c z) in R32F, Gaussian-filtered; exp(-c t) E[exp(c z)]",
+        {ParameterSpec::real("exponent", 80.0, 1.0, 88.0,
+                             "c of exp(c z); at most 88 so exp(c) fits a 32-bit float")});
+    return info;
+  }
+  const TechniqueInfo& info() const override { return staticInfo(); }
+
+  void configure(const ParameterSet& p) override {
+    configureShared(p, MomentsFormat{GL_R32F, "encodeEsm", "visibilityEsm"},
+                    glm::vec4(float(p.getFloat("exponent")), 0, 0, 0));
+  }
+};
+
+}  // namespace
+
+TESTBED_REGISTER_TECHNIQUE(ExponentialShadowMap);
+
+}  // namespace testbed

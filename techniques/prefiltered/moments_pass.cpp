@@ -1,0 +1,126 @@
+#include "techniques/prefiltered/moments_pass.h"
+
+#include "testbed/render/gpu_scene.h"
+#include "testbed/technique/technique.h"
+
+namespace testbed {
+namespace {
+
+constexpr int kMaxBlur = 15;  // blur.frag holds kMaxBlur / 2 + 1 weights
+
+}  // namespace
+
+std::vector<ParameterSpec> MomentsPass::parameters() {
+  ParameterSpec blur = ParameterSpec::integer(
+      "blur", 3, 1, kMaxBlur, "separable Gaussian kernel size in texels (odd; 3 = the papers' 3x3, 1 = no blur)");
+  blur.oddOnly = true;
+  return {blur, ParameterSpec::boolean("mips", false,
+                                       "mip-map the filtered moments and sample them trilinearly "
+                                       "(the mip chain counts in memory_bytes)")};
+}
+
+void MomentsPass::configure(const ParameterSet& parameters) {
+  blur_ = static_cast<int>(parameters.getInt("blur"));
+  mips_ = parameters.getBool("mips");
+}
+
+std::vector<float> MomentsPass::blurWeights(int size) {
+  // Row size−1 of Pascal's triangle, built in doubles and normalized.
+  std::vector<double> row{1.0};
+  for (int n = 1; n < size; ++n) {
+    std::vector<double> next(row.size() + 1, 0.0);
+    for (std::size_t k = 0; k < row.size(); ++k) {
+      next[k] += row[k];
+      next[k + 1] += row[k];
+    }
+    row = std::move(next);
+  }
+  double total = 0;
+  for (double w : row) total += w;
+  const int radius = size / 2;
+  std::vector<float> weights;
+  for (int k = 0; k <= radius; ++k) weights.push_back(static_cast<float>(row[std::size_t(radius + k)] / total));
+  return weights;
+}
+
+void MomentsPass::allocate(const FrameInputs& in, const MomentsFormat& format) {
+  const int n = in.shadowMapSize;
+  // levels 0 = the full chain, booked in the ledger like any other level.
+  moments_ = Texture::create2D(format.internalFormat, n, n, mips_ ? 0 : 1);
+  moments_.setFilter(mips_ ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
+  depth_ = Texture::create2D(depthFormat_, n, n);
+  momentsTarget_ = Framebuffer::create();
+  momentsTarget_.attachColor(0, moments_);
+  momentsTarget_.attachDepth(depth_);
+  momentsTarget_.finish({0});
+  if (blur_ > 1) {
+    pingPong_ = Texture::create2D(format.internalFormat, n, n);
+    pingPongTarget_ = Framebuffer::create();
+    pingPongTarget_.attachColor(0, pingPong_);
+    pingPongTarget_.finish({0});
+  } else {
+    pingPong_ = Texture();
+    pingPongTarget_ = Framebuffer();
+  }
+}
+
+void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsFormat& format,
+                         const glm::vec4& params) {
+  const GLenum depthFormat = depthInternalFormat(in.depthFormat);
+  if (!encode_ || format != format_) {
+    encode_ = Program::graphics("techniques/prefiltered/moments.vert", "techniques/prefiltered/moments.frag",
+                                format.defines());
+    clear_ = Program::graphics("techniques/prefiltered/far_plane.vert", "techniques/prefiltered/moments.frag",
+                               format.defines());
+  }
+  if (!moments_ || moments_.width() != in.shadowMapSize || format != format_ || depthFormat != depthFormat_) {
+    format_ = format;
+    depthFormat_ = depthFormat;
+    allocate(in, format);
+  }
+  if (!blurProgram_) blurProgram_ = Program::graphics("testbed/render/fullscreen.vert", "techniques/prefiltered/blur.frag");
+  const glm::ivec2 size(in.shadowMapSize);
+
+  {
+    auto scope = timer.scope("moments");
+    clear_.set("uParams", params);
+    const float farDepth = 1.0f;
+    glDepthMask(GL_TRUE);  // the clear obeys the write mask
+    glClearNamedFramebufferfv(momentsTarget_.id(), GL_DEPTH, 0, &farDepth);
+    screen_.draw(clear_, momentsTarget_, size);  // depth test off: colour only
+
+    glBindFramebuffer(GL_FRAMEBUFFER, momentsTarget_.id());
+    glViewport(0, 0, size.x, size.y);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);  // open meshes cast shadows from both sides
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    encode_.use();
+    encode_.set("uLightViewProjection", in.light.viewProjection());
+    encode_.set("uLightView", in.light.view);
+    encode_.set("uLightNear", in.light.nearPlane);
+    encode_.set("uLightFar", in.light.farPlane);
+    encode_.set("uParams", params);
+    in.geometry.draw();
+  }
+
+  // Always timed, so every configuration reports the same passes; with blur 1 and no mips
+  // it is empty.
+  auto scope = timer.scope("blur");
+  if (blur_ > 1) {
+    const std::vector<float> weights = blurWeights(blur_);
+    glProgramUniform1fv(blurProgram_.id(), blurProgram_.location("uWeights"), GLsizei(weights.size()),
+                        weights.data());
+    blurProgram_.set("uRadius", blur_ / 2);
+    blurProgram_.set("uSource", 0);
+    glBindTextureUnit(0, moments_.id());
+    blurProgram_.set("uStep", glm::ivec2(1, 0));
+    screen_.draw(blurProgram_, pingPongTarget_, size);
+    glBindTextureUnit(0, pingPong_.id());
+    blurProgram_.set("uStep", glm::ivec2(0, 1));
+    screen_.draw(blurProgram_, momentsTarget_, size);
+  }
+  if (mips_) glGenerateTextureMipmap(moments_.id());
+}
+
+}  // namespace testbed

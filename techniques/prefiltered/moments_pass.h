@@ -1,0 +1,54 @@
+#pragma once
+// The two passes every pre-filtered technique shares, parameterized by its MomentsFormat:
+//  "moments": the scene from the light (the shared shadow map's transform, no culling, no
+//             polygon offset: these techniques are bias-free) into a float colour target of
+//             the format's moments, with a depth attachment so each texel holds the nearest
+//             surface; cleared first to the moments of depth 1 (the far plane).
+//  "blur":    a separable Gaussian (horizontal then vertical, two draws through a ping-pong
+//             texture), then, with `mips`, the mip chain for trilinear lookups.
+// Parameters `blur` (odd kernel size, 1 = none) and `mips` are declared here once and
+// appended to every technique's own.
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "techniques/prefiltered/moments_format.h"
+#include "testbed/gl/objects.h"
+#include "testbed/gl/pass_timer.h"
+#include "testbed/render/depth_format.h"
+#include "testbed/render/screen_pass.h"
+#include "testbed/technique/parameters.h"
+
+namespace testbed {
+
+struct FrameInputs;
+
+class MomentsPass {
+ public:
+  static std::vector<ParameterSpec> parameters();
+  void configure(const ParameterSet& parameters);
+
+  // Renders and filters the moments; `params` goes to the format's encode function.
+  void render(const FrameInputs& in, PassTimer& timer, const MomentsFormat& format, const glm::vec4& params);
+  // The filtered moments: bilinear (trilinear with mips), clamped to the edge.
+  const Texture& moments() const { return moments_; }
+
+  // The kernel's weights by |offset| (0 .. size/2): binomial coefficients C(size−1, k) /
+  // 2^(size−1), the discrete Gaussian of variance (size−1)/4; size 3 is the papers' 3×3
+  // ([1 2 1]/4 per direction).
+  static std::vector<float> blurWeights(int size);
+
+ private:
+  void allocate(const FrameInputs& in, const MomentsFormat& format);
+
+  int blur_ = 3;
+  bool mips_ = false;
+  MomentsFormat format_;
+  GLenum depthFormat_ = 0;
+  Texture moments_, pingPong_, depth_;
+  Framebuffer momentsTarget_, pingPongTarget_;
+  Program encode_, clear_, blurProgram_;
+  ScreenPass screen_;
+};
+
+}  // namespace testbed

@@ -1,0 +1,44 @@
+#include "techniques/prefiltered/prefiltered_technique.h"
+
+#include "testbed/render/receiver_inputs.h"
+
+namespace testbed {
+
+TechniqueInfo PrefilteredTechnique::familyInfo(std::string id, std::string citation, std::string summary,
+                                               std::vector<ParameterSpec> own) {
+  TechniqueInfo info;
+  info.id = std::move(id);
+  info.family = "prefiltered";
+  info.output = OutputKind::Filtered;
+  info.citation = std::move(citation);
+  info.summary = std::move(summary);
+  info.parameters = std::move(own);
+  for (auto& spec : MomentsPass::parameters()) info.parameters.push_back(std::move(spec));
+  return info;
+}
+
+void PrefilteredTechnique::configureShared(const ParameterSet& parameters, MomentsFormat format, glm::vec4 params) {
+  moments_.configure(parameters);
+  format_ = std::move(format);
+  params_ = params;
+  visibility_ = Program();  // recompiled for this format on the next render
+}
+
+void PrefilteredTechnique::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
+  if (!visibility_)
+    visibility_ = Program::graphics("testbed/render/fullscreen.vert", "techniques/prefiltered/visibility.frag",
+                                    format_.defines());
+  moments_.render(in, timer, format_, params_);
+
+  auto scope = timer.scope("visibility");
+  bindReceiverInputs(visibility_, in);
+  glBindTextureUnit(2, moments_.moments().id());
+  visibility_.set("uMoments", 2);
+  visibility_.set("uLightView", in.light.view);
+  visibility_.set("uLightNear", in.light.nearPlane);
+  visibility_.set("uLightFar", in.light.farPlane);
+  visibility_.set("uParams", params_);
+  screen_.draw(visibility_, out.framebuffer, in.size);
+}
+
+}  // namespace testbed

@@ -1,0 +1,29 @@
+#version 450 core
+// Unit-test probe (revectorization_glsl_test.cpp): evaluates the real visibility functions
+// of the family for a list of light-space samples (uv, light depth), without a G-buffer.
+// uFunction: 0 shadow test, 1 smsr, 2 rsmss, 3 rpcf-smsr, 4 rpcf-rsmss (uImproved and
+// uKernel as the techniques set them).
+layout(local_size_x = 64) in;
+#include "techniques/revectorization/rpcf_smsr.glsl"
+#include "techniques/revectorization/rpcf_rsmss.glsl"
+
+layout(std430, binding = 0) readonly buffer Samples { vec4 samples[]; };  // xy uv, z depth
+layout(std430, binding = 1) writeonly buffer Results { float results[]; };
+uniform int uFunction;
+uniform int uCount;
+
+void main() {
+  int i = int(gl_GlobalInvocationID.x);
+  if (i >= uCount) return;
+  vec2 uv = samples[i].xy;
+  float z = samples[i].z;
+  float v;
+  switch (uFunction) {
+    case 1: v = smsrVisibility(uv, z); break;
+    case 2: v = rsmssVisibility(uv, z); break;
+    case 3: v = rpcfSmsrVisibility(uv, z); break;
+    case 4: v = rpcfRsmssVisibility(uv, z); break;
+    default: v = shadowTest(uv, z, uBias); break;
+  }
+  results[i] = v;
+}

@@ -1,0 +1,132 @@
+// Revectorization-based shadow mapping (RBSM): the building blocks every technique of this
+// family shares (Macedo & Apolinário, GI 2016, §3.1; Unity listing 3 for computeRD).
+// Each technique's own visibility function lives in its own file and includes this one.
+//
+// Conventions:
+// - A sample is a light-space point (uv in [0,1]², light depth z). Its texel is
+//   floor(uv·size) and p = fract(uv·size) its position inside that texel.
+// - s ∈ {0 shadow, 1 lit}: the nearest depth test of glsl/shadow_test.glsl.
+// - d = |N − s| for the 4 neighbours (left, right, bottom, top) one texel apart (eq. 3 of
+//   seed 004). Neighbours outside the map count as equal to s: the map's border (which
+//   reads as shadow) is not an edge of any occluder, and revectorizing along it would
+//   bend the frustum's straight border.
+// - For each axis, the traversal (computeRD) walks both directions and gives signed step
+//   counts; the ONDS of that axis is the normalized distance α ∈ [0,1] of the sample from
+//   the edge's end (the "corner" of the aliasing step). 1 − α is the paper's d_on (eq. 1).
+#include "testbed/glsl/shadow_test.glsl"
+
+uniform int uMaxSearch;  // the paper's L: most texels walked per direction (16)
+// Sloped-surface epsilon in normalized light depth (GI 2016 §3.1: 2.5e-5). One step of a
+// 16-bit map is 1/65535 ≈ 1.5e-5, so with 16-bit depth ε must exceed that to matter at all.
+uniform float uEpsilon;
+uniform float uBias;     // constant depth bias, as sm's
+
+const int RV_NO_END = 0;  // straight run (I): no end found on either side
+const int RV_L = 1;       // one end found: an L-shaped step
+const int RV_U = 2;       // both ends found: a U-shaped notch (also opposite neighbours)
+
+bool rvInsideMap(ivec2 t) {
+  return all(greaterThanEqual(t, ivec2(0))) && all(lessThan(t, uShadowMapSize));
+}
+
+float rvStoredDepth(ivec2 t) { return texture(uShadowMap, (vec2(t) + 0.5) / vec2(uShadowMapSize)).r; }
+
+// 4-neighbour discontinuity (left, right, bottom, top) of texel t for light depth z.
+vec4 rvDiscontinuity(ivec2 t, float z, float s) {
+  const ivec2 offsets[4] = ivec2[4](ivec2(-1, 0), ivec2(1, 0), ivec2(0, -1), ivec2(0, 1));
+  vec4 d;
+  for (int i = 0; i < 4; ++i) {
+    ivec2 n = t + offsets[i];
+    d[i] = rvInsideMap(n) ? abs(shadowTestTexel(n, z, uBias) - s) : 0.0;
+  }
+  return d;
+}
+
+// The compressed discontinuity d_c of GI 2016 table 1: r = (2·left + right)/4,
+// g = (2·bottom + top)/4 (0 none, .25 right/top, .5 left/bottom, .75 both), b = 1 − s
+// (0 entering: lit next to shadow, 1 exiting: shadowed next to lit).
+vec3 rvCompress(vec4 d, float s) {
+  return vec3((2.0 * d.x + d.y) * 0.25, (2.0 * d.z + d.w) * 0.25, 1.0 - s);
+}
+
+// computeRD: walks from `origin` along `dir`, at most uMaxSearch texels. Returns +n when
+// the n-th texel's test flips relative to the origin (the edge's end), −n when the n-th
+// texel no longer shares a discontinuity direction with the origin, leaves the map, or
+// the search is exhausted (n = uMaxSearch + 1 then).
+// Sloped surfaces (GI 2016 §3.1): when the walked texel's stored depth lies within ε of
+// the receiver's depth, it is taken to be the receiver's own surface and z is lowered by
+// ε before the test; as in the authors' code the lowering accumulates along the walk.
+int rvComputeRD(ivec2 origin, ivec2 dir, float z, float s, vec4 dOrigin) {
+  int n = 1;
+  for (int i = 0; i < uMaxSearch; ++i) {
+    ivec2 t = origin + dir * n;
+    if (!rvInsideMap(t)) return -n;
+    float stored = rvStoredDepth(t);
+    if (abs(z - stored) < uEpsilon) z -= uEpsilon;
+    float st = z - uBias <= stored ? 1.0 : 0.0;
+    if (st != s) return n;
+    if (dot(rvDiscontinuity(t, z, s), dOrigin) == 0.0) return -n;
+    ++n;
+  }
+  return -n;
+}
+
+struct RvAxis {
+  float alpha;  // normalized distance from the end in [0,1]; 1 for a straight run
+  int kind;     // RV_NO_END, RV_L, RV_U
+};
+
+// ONDS of one axis (GI 2016 eq. 1) from the signed steps towards −axis and +axis and the
+// sample's sub-texel coordinate p along the axis. L = min(|a|+|b|−1, max_search); the
+// distance to an end found at +n is (n − 1) + (1 − p) = n − p_o with p_o = p oriented
+// towards that end, so α = (n − p_o)/L = 1 − d_on. U-shapes: a tent, 2·min(dist)/L.
+RvAxis rvAxis(int toNeg, int toPos, float p) {
+  float len = float(min(abs(toNeg) + abs(toPos) - 1, uMaxSearch));
+  float distPos = float(toPos) - p;
+  float distNeg = float(toNeg) - (1.0 - p);
+  RvAxis a;
+  if (toPos > 0 && toNeg > 0) {
+    a.kind = RV_U;
+    a.alpha = 2.0 * min(distPos, distNeg) / len;
+  } else if (toPos > 0 || toNeg > 0) {
+    a.kind = RV_L;
+    a.alpha = (toPos > 0 ? distPos : distNeg) / len;
+  } else {
+    a.kind = RV_NO_END;
+    a.alpha = 1.0;
+  }
+  a.alpha = clamp(a.alpha, 0.0, 1.0);
+  return a;
+}
+
+struct RvSample {
+  float s;      // shadow test of the sample
+  vec4 d;       // its discontinuity
+  bool edge;    // traversed: an edge texel of a side the caller asked for
+  RvAxis x, y;  // ONDS along the map's x and y axes (valid when edge)
+};
+
+// Shadow test, discontinuity and (for edge texels) the ONDS of both axes. `bothSides`
+// false: only lit texels (entering discontinuities) are traversed, as single-pass SMSR.
+RvSample rvSample(vec2 uv, float z, bool bothSides) {
+  RvSample r;
+  vec2 t = uv * vec2(uShadowMapSize);
+  ivec2 texel = ivec2(floor(t));
+  vec2 p = t - floor(t);
+  r.edge = false;
+  r.d = vec4(0.0);
+  r.x = RvAxis(1.0, RV_NO_END);
+  r.y = RvAxis(1.0, RV_NO_END);
+  if (!rvInsideMap(texel)) {  // outside the map: shadow (border depth 0), nothing to do
+    r.s = shadowTest(uv, z, uBias);
+    return r;
+  }
+  r.s = shadowTestTexel(texel, z, uBias);
+  if (r.s == 0.0 && !bothSides) return r;
+  r.d = rvDiscontinuity(texel, z, r.s);
+  if (r.d == vec4(0.0)) return r;
+  r.edge = true;
+  r.x = rvAxis(rvComputeRD(texel, ivec2(-1, 0), z, r.s, r.d), rvComputeRD(texel, ivec2(1, 0), z, r.s, r.d), p.x);
+  r.y = rvAxis(rvComputeRD(texel, ivec2(0, -1), z, r.s, r.d), rvComputeRD(texel, ivec2(0, 1), z, r.s, r.d), p.y);
+  return r;
+}

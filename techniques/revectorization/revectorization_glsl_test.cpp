@@ -1,0 +1,374 @@
+// Unit tests of the revectorization GLSL itself (not a C++ copy): probe.comp includes the
+// family's shader files and evaluates a visibility function for a list of light-space
+// samples against a synthetic 32×32 R32F "shadow map" (nearest, clamp to border 0 like
+// the real one). Occluder texels store depth 0.2, receiver texels 0.5, samples lie at
+// depth 0.5, so s = 1 exactly where the texel centre is off the occluder.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "testbed/gl/objects.h"
+#include "tests/gl_fixture.h"
+
+namespace testbed {
+namespace {
+
+constexpr int kSize = 32;
+constexpr int kPerTexel = 8;  // samples per texel side
+constexpr float kOccluder = 0.2f, kReceiver = 0.5f;
+
+enum Function { kShadowTest = 0, kSmsr = 1, kRsmss = 2, kRpcfSmsr = 3, kRpcfRsmss = 4 };
+
+struct Options {
+  bool improved = false;
+  int maxSearch = 16;
+  int kernel = 1;
+};
+
+// occluded(x, y) in texel units (x, y continuous): the analytic occluder.
+using Shape = std::function<bool(double, double)>;
+
+class Probe {
+ public:
+  Probe() {
+    test::sharedContext();
+    program_ = Program::compute("techniques/revectorization/probe.comp");
+    map_ = Texture::create2D(GL_R32F, kSize, kSize);
+    map_.setFilter(GL_NEAREST, GL_NEAREST);
+    map_.setWrap(GL_CLAMP_TO_BORDER, glm::vec4(0.0f));
+  }
+
+  // Rasterizes the shape at texel centres (what the shadow-map pass does).
+  void upload(const Shape& occluded) {
+    std::vector<float> depth(kSize * kSize);
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) depth[y * kSize + x] = occluded(x + 0.5, y + 0.5) ? kOccluder : kReceiver;
+    glTextureSubImage2D(map_.id(), 0, 0, 0, kSize, kSize, GL_RED, GL_FLOAT, depth.data());
+  }
+
+  // Visibility at light-space points given in texel units.
+  std::vector<float> run(Function function, const std::vector<glm::vec2>& points, const Options& o = {}) {
+    std::vector<glm::vec4> samples;
+    for (const auto& p : points) samples.emplace_back(p / float(kSize), kReceiver, 0.0f);
+    Buffer in = Buffer::create(samples.size() * sizeof(glm::vec4), samples.data());
+    Buffer out = Buffer::create(samples.size() * sizeof(float), nullptr);
+    program_.use();
+    glBindTextureUnit(2, map_.id());
+    program_.set("uShadowMap", 2);
+    program_.set("uShadowMapSize", glm::ivec2(kSize));
+    program_.set("uMaxSearch", o.maxSearch);
+    program_.set("uEpsilon", 2.5e-5f);
+    program_.set("uBias", 0.0f);
+    program_.set("uImproved", o.improved ? 1 : 0);
+    program_.set("uKernel", o.kernel);
+    program_.set("uFunction", int(function));
+    program_.set("uCount", int(samples.size()));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
+    glDispatchCompute(GLuint((samples.size() + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<float> result(samples.size());
+    glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(result.size() * sizeof(float)), result.data());
+    checkGlError("probe");
+    return result;
+  }
+
+ private:
+  Program program_;
+  Texture map_;
+};
+
+Probe& probe() {
+  static Probe instance;
+  return instance;
+}
+
+// kPerTexel² samples per texel over texels [x0, x1) × [y0, y1), nudged off the exact
+// fractions where eq. 7's strict "< 0.5" would tie (a tie is lit on one side, shadow on
+// the other, which is not an asymmetry of the function).
+std::vector<glm::vec2> grid(int x0, int y0, int x1, int y1) {
+  std::vector<glm::vec2> points;
+  for (int y = y0 * kPerTexel; y < y1 * kPerTexel; ++y)
+    for (int x = x0 * kPerTexel; x < x1 * kPerTexel; ++x)
+      points.emplace_back((x + 0.5137f) / kPerTexel, (y + 0.4871f) / kPerTexel);
+  return points;
+}
+
+struct Errors {
+  int falseLit = 0, falseShadow = 0;
+  int total() const { return falseLit + falseShadow; }
+};
+
+Errors classify(const std::vector<float>& v, const std::vector<glm::vec2>& points, const Shape& occluded) {
+  Errors e;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const bool shadow = occluded(points[i].x, points[i].y);
+    const bool lit = v[i] >= 0.5f;
+    e.falseLit += shadow && lit;
+    e.falseShadow += !shadow && !lit;
+  }
+  return e;
+}
+
+// Half-planes "above" a line y = y0 + slope·(x − 16) (shallow) or right of
+// x = x0 + slope·(y − 16) (steep), each in both orientations.
+struct Edge {
+  std::string name;
+  Shape occluded;
+};
+
+std::vector<Edge> staircases() {
+  std::vector<Edge> edges;
+  for (const double slope : {1.0 / 5.0, 2.0 / 7.0, 1.0 / 3.0, 0.6, 1.0})
+    for (const int orientation : {0, 1, 2, 3}) {
+      const double offset = 16.37;  // sub-texel phase away from texel centres
+      Shape s;
+      switch (orientation) {
+        case 0: s = [=](double x, double y) { return y > offset + slope * (x - 16); }; break;
+        case 1: s = [=](double x, double y) { return y < offset - slope * (x - 16); }; break;
+        case 2: s = [=](double x, double y) { return x > offset + slope * (y - 16); }; break;
+        default: s = [=](double x, double y) { return x < offset - slope * (y - 16); }; break;
+      }
+      char name[64];
+      std::snprintf(name, sizeof name, "slope %.3f orientation %d", slope, orientation);
+      edges.push_back({name, s});
+    }
+  return edges;
+}
+
+// Improved SMSR (seed 004 eq. 7) and RSMSS put the edge closer to the true line than the
+// stair: fewer wrongly classified samples than the shadow test. Conservative SMSR (eq. 4)
+// only ever adds shadow on the lit side (entering discontinuities), so its false-lit
+// samples are at most sm's; its line is parallel to the true one but half a texel into
+// the lit side (the overestimation seed 004 §3.1 describes), so its total is printed, not
+// asserted against sm.
+TEST(RevectorizationGlsl, RevectorizedEdgeIsCloserToTheLineThanTheStair) {
+  Probe& p = probe();
+  const auto points = grid(6, 6, 26, 26);
+  std::cout << "edge                        samples wrong: sm  smsr-cons  smsr-impr  rsmss\n";
+  int smSum = 0, consSum = 0, imprSum = 0, rsmssSum = 0;
+  for (const auto& edge : staircases()) {
+    SCOPED_TRACE(edge.name);
+    p.upload(edge.occluded);
+    const Errors sm = classify(p.run(kShadowTest, points), points, edge.occluded);
+    const Errors cons = classify(p.run(kSmsr, points), points, edge.occluded);
+    const Errors impr = classify(p.run(kSmsr, points, {.improved = true}), points, edge.occluded);
+    const Errors rsmss = classify(p.run(kRsmss, points), points, edge.occluded);
+    std::printf("%-28s %20d %10d %10d %6d\n", edge.name.c_str(), sm.total(), cons.total(), impr.total(),
+                rsmss.total());
+    EXPECT_LT(impr.total(), sm.total());
+    EXPECT_LT(rsmss.total(), sm.total());
+    EXPECT_LE(cons.falseLit, sm.falseLit);
+    EXPECT_GE(cons.falseShadow, sm.falseShadow);
+    smSum += sm.total(), consSum += cons.total(), imprSum += impr.total(), rsmssSum += rsmss.total();
+  }
+  std::printf("%-28s %20d %10d %10d %6d\n", "sum", smSum, consSum, imprSum, rsmssSum);
+  std::fflush(stdout);
+  EXPECT_LT(imprSum * 2, smSum);  // the improved line is close to exact on ideal staircases
+}
+
+// Conservative SMSR's line on an ideal staircase is the true line moved half a texel
+// (across the run's axis) into the lit side: on a shallow edge, every lit sample more than
+// half a texel below the line stays lit, and every sample above the shifted line is shadow.
+TEST(RevectorizationGlsl, ConservativeLineIsTheTrueLineHalfATexelIntoTheLitSide) {
+  Probe& p = probe();
+  const double slope = 0.2, offset = 16.37;
+  const Shape occluded = [=](double x, double y) { return y > offset + slope * (x - 16); };
+  p.upload(occluded);
+  const auto points = grid(8, 8, 24, 24);
+  const auto v = p.run(kSmsr, points);
+  int wrong = 0, near = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const double below = offset + slope * (points[i].x - 16) - points[i].y;  // > 0: lit side
+    const double margin = below - 0.5;
+    if (std::abs(margin) < 0.08) {  // the stair's quantization around the shifted line
+      ++near;
+      continue;
+    }
+    wrong += (margin > 0) != (v[i] >= 0.5f);
+  }
+  EXPECT_EQ(wrong, 0);
+  EXPECT_GT(near, 0);
+}
+
+// I: a straight axis-aligned edge crossing the whole map is left as the shadow test says.
+TEST(RevectorizationGlsl, StraightRunsKeepTheShadowTest) {
+  Probe& p = probe();
+  for (const int axis : {0, 1}) {
+    const Shape occluded = [=](double x, double y) { return (axis == 0 ? y : x) > 16.0; };
+    p.upload(occluded);
+    const auto points = grid(0, 0, kSize, kSize);
+    const auto sm = p.run(kShadowTest, points);
+    EXPECT_EQ(p.run(kSmsr, points), sm);
+    EXPECT_EQ(p.run(kSmsr, points, {.improved = true}), sm);
+    EXPECT_EQ(p.run(kRsmss, points), sm);
+  }
+}
+
+// L: one step of a staircase (shadow above row 16 right of column 16, above row 17
+// elsewhere): the lit run under the step's upper tread is clipped near the corner only.
+TEST(RevectorizationGlsl, LShapedStepIsClippedTowardsItsCorner) {
+  Probe& p = probe();
+  const Shape occluded = [](double x, double y) { return y > (x > 16.0 ? 16.0 : 17.0); };
+  p.upload(occluded);
+  // Row 16, columns 0..15: lit texels with shadow above; the run ends at column 16
+  // (shadow) and begins at the map's border, so L = 16.
+  auto at = [&](Function f, float x, float y, Options o = {}) { return p.run(f, {{x, y}}, o)[0]; };
+  EXPECT_EQ(at(kSmsr, 15.9f, 16.9f), 0.0f);  // at the corner: shadow
+  EXPECT_EQ(at(kSmsr, 15.9f, 16.1f), 0.0f);  // conservative: the whole corner texel
+  EXPECT_EQ(at(kSmsr, 1.5f, 16.5f), 1.0f);   // far from the corner: lit
+  EXPECT_EQ(at(kSmsr, 15.9f, 16.9f, {.improved = true}), 0.0f);
+  EXPECT_EQ(at(kSmsr, 15.9f, 16.1f, {.improved = true}), 1.0f);  // improved: half height
+  EXPECT_EQ(at(kSmsr, 12.5f, 16.9f, {.improved = true}), 0.0f);  // improved: within half the run
+  EXPECT_EQ(at(kSmsr, 4.5f, 16.9f, {.improved = true}), 1.0f);   // beyond it
+  // The shadowed side of the same step (row 16, column 16..) is opened by improved only.
+  EXPECT_EQ(at(kSmsr, 16.1f, 16.1f), 0.0f);
+  EXPECT_EQ(at(kSmsr, 16.1f, 16.1f, {.improved = true}), 1.0f);
+  const float r = at(kRsmss, 15.5f, 16.5f);
+  EXPECT_GT(r, 0.0f);
+  EXPECT_LT(r, 1.0f);
+}
+
+// U: a lit notch of 3 texels in row 16 under shadow, shadowed at both ends. Conservative
+// SMSR fills it; improved and RSMSS close it from both ends (tent), keeping its middle lit
+// near the bottom. Opposite neighbours (a 1-texel notch) are a U of length 1.
+TEST(RevectorizationGlsl, UShapedNotchesAreClosed) {
+  Probe& p = probe();
+  for (const int width : {1, 3}) {
+    SCOPED_TRACE("notch width " + std::to_string(width));
+    const Shape occluded = [=](double x, double y) {
+      const bool notch = y > 16.0 && y < 17.0 && x > 10.0 && x < 10.0 + width;
+      return y > 16.0 && !notch;
+    };
+    p.upload(occluded);
+    const float mid = 10.0f + width * 0.5f;
+    auto at = [&](Function f, float x, float y, Options o = {}) { return p.run(f, {{x, y}}, o)[0]; };
+    EXPECT_EQ(at(kShadowTest, mid, 16.5f), 1.0f);
+    EXPECT_EQ(at(kSmsr, mid, 16.1f), 0.0f);
+    EXPECT_EQ(at(kSmsr, mid, 16.9f), 0.0f);
+    EXPECT_EQ(at(kSmsr, 10.02f, 16.98f, {.improved = true}), 0.0f);  // next to an end, at the top
+    EXPECT_EQ(at(kSmsr, mid, 16.1f, {.improved = true}), 1.0f);      // middle, bottom
+    EXPECT_LT(at(kRsmss, 10.02f, 16.98f), 0.5f);
+  }
+}
+
+// An occluder edge that leaves the map: the map's border (which reads as shadow) is not
+// treated as an edge, so texels along it are not clipped against it; a map without any
+// occluder stays lit everywhere inside; the part of the edge inside is still improved.
+TEST(RevectorizationGlsl, EdgesThatLeaveTheMap) {
+  Probe& p = probe();
+  p.upload([](double, double) { return false; });
+  const auto all = grid(0, 0, kSize, kSize);
+  for (const Function f : {kSmsr, kRsmss})
+    for (const float v : p.run(f, all, {.improved = true})) EXPECT_EQ(v, 1.0f);
+  for (const float v : p.run(kSmsr, all)) EXPECT_EQ(v, 1.0f);
+
+  // Shallow edge entering at the left border.
+  const Shape occluded = [](double x, double y) { return y > 3.3 + 0.2 * x; };
+  p.upload(occluded);
+  const auto border = grid(0, 0, 6, 12);
+  const Errors sm = classify(p.run(kShadowTest, border), border, occluded);
+  const Errors impr = classify(p.run(kSmsr, border, {.improved = true}), border, occluded);
+  const Errors cons = classify(p.run(kSmsr, border), border, occluded);
+  std::printf("edge leaving the map, wrong samples: sm %d, smsr-improved %d, smsr-conservative %d\n", sm.total(),
+              impr.total(), cons.total());
+  EXPECT_LE(impr.total(), sm.total());
+  EXPECT_LE(cons.falseLit, sm.falseLit);
+  // The column next to the border, far below the edge, is lit as sm says.
+  for (const auto& [f, o] : {std::pair{kSmsr, Options{}}, std::pair{kSmsr, Options{.improved = true}}})
+    EXPECT_EQ(p.run(f, {{0.1f, 0.5f}}, o)[0], 1.0f);
+}
+
+// max_search: on an edge whose runs (40 texels) are longer than 2·max_search, texels
+// farther than max_search from both run ends find no end (a straight run) and keep the
+// shadow test; with max_search = 64 the same texels are revectorized.
+TEST(RevectorizationGlsl, MaxSearchCutsOffLongEdges) {
+  Probe& p = probe();
+  // Line of slope −1/40 through (20, 16.5): row 17 is all shadow, row 16 is lit left of
+  // column 20 and shadow from it on.
+  const Shape occluded = [](double x, double y) { return y > 16.5 + (20.0 - x) / 40.0; };
+  p.upload(occluded);
+  // Row 16's lit texels have shadow above: columns 0..19 (the run leaves the map on the
+  // left), its end (shadow in row 16) is column 20; columns 1, 2 are over 16 texels away.
+  std::vector<glm::vec2> far{{1.5f, 16.95f}, {2.5f, 16.95f}};
+  std::vector<glm::vec2> nearEnd{{19.5f, 16.95f}};
+  for (const bool improved : {false, true}) {
+    SCOPED_TRACE(improved ? "improved" : "conservative");
+    const auto sm = p.run(kShadowTest, far);
+    EXPECT_EQ(p.run(kSmsr, far, {.improved = improved, .maxSearch = 16}), sm);
+    EXPECT_EQ(p.run(kSmsr, nearEnd, {.improved = improved, .maxSearch = 16})[0], 0.0f);
+  }
+  // With a long enough search the far texels see the end and the conservative line
+  // (from the run's beginning at the top edge) clips them near the top.
+  const auto longSearch = p.run(kSmsr, far, {.maxSearch = 64});
+  EXPECT_EQ(p.run(kShadowTest, far)[0], 1.0f);
+  EXPECT_EQ(longSearch[1], 0.0f);
+}
+
+// The improved function is symmetric: swapping occluder and lit texels flips the result.
+TEST(RevectorizationGlsl, ImprovedVisibilityIsSymmetricInLitAndShadow) {
+  Probe& p = probe();
+  const auto points = grid(4, 4, 28, 28);
+  for (const auto& edge : staircases()) {
+    SCOPED_TRACE(edge.name);
+    p.upload(edge.occluded);
+    const auto a = p.run(kSmsr, points, {.improved = true});
+    const auto ra = p.run(kRsmss, points);
+    p.upload([&](double x, double y) { return !edge.occluded(x, y); });
+    const auto b = p.run(kSmsr, points, {.improved = true});
+    const auto rb = p.run(kRsmss, points);
+    int asymmetric = 0, rsmssAsymmetric = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      asymmetric += a[i] != 1.0f - b[i];
+      rsmssAsymmetric += std::abs(ra[i] - (1.0f - rb[i])) > 1e-5f;
+    }
+    EXPECT_EQ(asymmetric, 0);
+    EXPECT_EQ(rsmssAsymmetric, 0);
+  }
+}
+
+// RSMSS is a visibility in [0, 1], with values strictly between on edges (it filters).
+TEST(RevectorizationGlsl, RsmssValuesAreInTheUnitInterval) {
+  Probe& p = probe();
+  const auto points = grid(0, 0, kSize, kSize);
+  for (const auto& edge : staircases()) {
+    SCOPED_TRACE(edge.name);
+    p.upload(edge.occluded);
+    int outside = 0, partial = 0;
+    for (const int kernel : {1, 3}) {
+      const auto v = p.run(kernel == 1 ? kRsmss : kRpcfRsmss, points, {.kernel = kernel});
+      for (const float x : v) {
+        outside += !(x >= 0.0f && x <= 1.0f);
+        partial += x > 0.0f && x < 1.0f;
+      }
+    }
+    EXPECT_EQ(outside, 0);
+    EXPECT_GT(partial, 0);
+  }
+}
+
+// RPCF with a 1×1 kernel is its base function bit for bit (eqs. 2 and 3).
+TEST(RevectorizationGlsl, RpcfWithKernelOneEqualsItsBase) {
+  Probe& p = probe();
+  const auto points = grid(0, 0, kSize, kSize);
+  for (const auto& edge : staircases()) {
+    SCOPED_TRACE(edge.name);
+    p.upload(edge.occluded);
+    for (const bool improved : {false, true})
+      EXPECT_EQ(p.run(kRpcfSmsr, points, {.improved = improved, .kernel = 1}),
+                p.run(kSmsr, points, {.improved = improved}));
+    EXPECT_EQ(p.run(kRpcfRsmss, points, {.kernel = 1}), p.run(kRsmss, points));
+    // A wider kernel filters: values strictly between 0 and 1 appear.
+    int partial = 0;
+    for (const float v : p.run(kRpcfSmsr, points, {.kernel = 3})) partial += v > 0.0f && v < 1.0f;
+    EXPECT_GT(partial, 0);
+  }
+}
+
+}  // namespace
+}  // namespace testbed

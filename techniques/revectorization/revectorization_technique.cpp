@@ -1,0 +1,116 @@
+#include "techniques/revectorization/revectorization_technique.h"
+
+#include <algorithm>
+
+#include "testbed/render/receiver_inputs.h"
+
+namespace testbed::revectorization {
+
+std::vector<ParameterSpec> commonParameters() {
+  return {
+      ParameterSpec::integer("max_search", 16, 1, 64,
+                             "most texels walked per direction when measuring an edge (the paper's L = 16)"),
+      // In normalized light depth: one 16-bit step is 1/65535 ≈ 1.5e-5, so 2.5e-5 is under
+      // two 16-bit steps; with 24-bit or 32f maps it is many steps.
+      ParameterSpec::real("epsilon", 2.5e-5, 0.0, 0.01,
+                          "sloped-surface epsilon in normalized light depth (GI 2016: 2.5e-5 or 2.5e-6); "
+                          "a 16-bit depth step is 1.5e-5, so pick it with the depth format in mind"),
+      ParameterSpec::real("bias", 0.0, -1.0, 1.0, "constant depth bias subtracted from the receiver's light depth"),
+      ParameterSpec::choice("debug", "none", {"none", "discontinuity", "onds"},
+                            "also write T.discontinuity.png (d_c as RGB) or T.onds.png (d_on: x red, y green)"),
+  };
+}
+
+ParameterSpec visibilityParameter() {
+  return ParameterSpec::choice("visibility", "conservative", {"conservative", "improved"},
+                               "conservative: lit side only, GI 2016 / seed 004 eq. 4; "
+                               "improved: both sides, seed 004 eq. 7");
+}
+
+ParameterSpec kernelParameter() {
+  auto kernel = ParameterSpec::integer("kernel", 3, 1, 17, "filter width k in texels (k×k revectorized taps, odd)");
+  kernel.oddOnly = true;  // odd so the block is centred on the receiver's texel
+  return kernel;
+}
+
+std::vector<ParameterSpec> withCommonParameters(std::vector<ParameterSpec> own) {
+  for (auto& spec : commonParameters()) own.push_back(spec);
+  for (auto& spec : ShadowMapPass::parameters()) own.push_back(spec);
+  return own;
+}
+
+void Common::configure(const ParameterSet& parameters) {
+  maxSearch_ = static_cast<int>(parameters.getInt("max_search"));
+  epsilon_ = static_cast<float>(parameters.getFloat("epsilon"));
+  bias_ = static_cast<float>(parameters.getFloat("bias"));
+  const std::string& debug = parameters.getChoice("debug");
+  debug_ = debug == "discontinuity" ? DebugView::Discontinuity
+           : debug == "onds"        ? DebugView::Onds
+                                    : DebugView::None;
+}
+
+void Common::bindLibrary(const Program& program, const Texture& shadowMap) const {
+  bindShadowMap(program, shadowMap);
+  program.set("uMaxSearch", maxSearch_);
+  program.set("uEpsilon", epsilon_);
+  program.set("uBias", bias_);
+}
+
+void Common::renderDebug(const FrameInputs& in, const Texture& shadowMap, bool bothSides) {
+  if (debug_ == DebugView::None) return;
+  if (!debugProgram_)
+    debugProgram_ = Program::graphics("testbed/render/fullscreen.vert", "techniques/revectorization/debug.frag");
+  if (!debugTexture_ || debugTexture_.width() != in.size.x || debugTexture_.height() != in.size.y) {
+    debugTexture_ = Texture::create2D(GL_RGBA8, in.size.x, in.size.y);
+    debugTarget_ = Framebuffer::create();
+    debugTarget_.attachColor(0, debugTexture_);
+    debugTarget_.finish({0});
+  }
+  const float black[4] = {0, 0, 0, 1};
+  glClearNamedFramebufferfv(debugTarget_.id(), GL_COLOR, 0, black);
+  bindReceiverInputs(debugProgram_, in);
+  bindLibrary(debugProgram_, shadowMap);
+  debugProgram_.set("uDebugView", debug_ == DebugView::Discontinuity ? 1 : 2);
+  debugProgram_.set("uBothSides", bothSides ? 1 : 0);
+  screen_.draw(debugProgram_, debugTarget_, in.size);
+
+  // Read back RGB, flipped to top-down as image files store it.
+  const std::vector<float> rgba = debugTexture_.readFloats(4);
+  debugImage_ = ImageF{in.size.x, in.size.y, 3, std::vector<float>(std::size_t(in.size.x) * in.size.y * 3)};
+  for (int y = 0; y < in.size.y; ++y)
+    for (int x = 0; x < in.size.x; ++x)
+      for (int c = 0; c < 3; ++c)
+        debugImage_.pixels[(std::size_t(in.size.y - 1 - y) * in.size.x + x) * 3 + c] =
+            rgba[(std::size_t(y) * in.size.x + x) * 4 + c];
+}
+
+std::vector<std::pair<std::string, ImageF>> Common::debugImages() const {
+  switch (debug_) {
+    case DebugView::Discontinuity: return {{"discontinuity", debugImage_}};
+    case DebugView::Onds: return {{"onds", debugImage_}};
+    case DebugView::None: break;
+  }
+  return {};
+}
+
+void SinglePassTechnique::configure(const ParameterSet& parameters) {
+  shadowMap_.configure(parameters);
+  common_.configure(parameters);
+  configureOwn(parameters);
+}
+
+void SinglePassTechnique::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
+  if (!program_) program_ = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_);
+  shadowMap_.render(in, timer);
+  {
+    auto scope = timer.scope("revectorize");
+    bindReceiverInputs(program_, in);
+    common_.bindLibrary(program_, shadowMap_.depth());
+    setOwnUniforms(program_);
+    screen_.draw(program_, out.framebuffer, in.size);
+  }
+  // Untimed: the debug view never changes the timed pass.
+  common_.renderDebug(in, shadowMap_.depth(), bothSides_);
+}
+
+}  // namespace testbed::revectorization

@@ -1,0 +1,73 @@
+#pragma once
+// The shared C++ side of the single-pass revectorization techniques (smsr, rsmss,
+// rpcf-smsr, rpcf-rsmss): the shared shadow map, one "revectorize" screen pass running the
+// technique's own fragment shader, the common parameters, and the debug views.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "testbed/render/screen_pass.h"
+#include "testbed/render/shadow_map_pass.h"
+#include "testbed/technique/technique.h"
+
+namespace testbed::revectorization {
+
+// max_search, epsilon, bias, debug (the family's common parameters).
+std::vector<ParameterSpec> commonParameters();
+// `visibility` of smsr and rpcf-smsr: conservative (seed 004 eq. 4) or improved (eq. 7).
+ParameterSpec visibilityParameter();
+// `kernel` of the RPCF variants.
+ParameterSpec kernelParameter();
+// Appends commonParameters() and ShadowMapPass::parameters() to `own`.
+std::vector<ParameterSpec> withCommonParameters(std::vector<ParameterSpec> own);
+
+enum class DebugView { None, Discontinuity, Onds };
+
+// The common settings and the untimed debug view; used by the single-pass techniques and
+// by smsr-2pass.
+class Common {
+ public:
+  void configure(const ParameterSet& parameters);
+  // Uniforms of revectorization.glsl (and the shadow map binding).
+  void bindLibrary(const Program& program, const Texture& shadowMap) const;
+  // When a debug view was asked for, draws it (outside any timed scope) and reads it back.
+  // `bothSides` false shows entering discontinuities only.
+  void renderDebug(const FrameInputs& in, const Texture& shadowMap, bool bothSides);
+  std::vector<std::pair<std::string, ImageF>> debugImages() const;
+
+ private:
+  int maxSearch_ = 16;
+  float epsilon_ = 2.5e-5f, bias_ = 0.0f;
+  DebugView debug_ = DebugView::None;
+  Program debugProgram_;
+  Texture debugTexture_;
+  Framebuffer debugTarget_;
+  ScreenPass screen_;
+  ImageF debugImage_;
+};
+
+// A technique made of the shared shadow map and one screen pass, timed "revectorize".
+class SinglePassTechnique : public ShadowTechnique {
+ public:
+  void configure(const ParameterSet& parameters) override;
+  void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override;
+  std::vector<std::pair<std::string, ImageF>> debugImages() const override { return common_.debugImages(); }
+
+ protected:
+  // `fragmentKey`: the technique's shader; `bothSides`: whether exiting discontinuities
+  // take part (debug view only; the shader decides for itself).
+  SinglePassTechnique(std::string fragmentKey, bool bothSides)
+      : bothSides_(bothSides), fragmentKey_(std::move(fragmentKey)) {}
+  virtual void configureOwn(const ParameterSet& parameters) = 0;
+  virtual void setOwnUniforms(const Program& program) const = 0;
+  bool bothSides_;
+
+ private:
+  std::string fragmentKey_;
+  Common common_;
+  ShadowMapPass shadowMap_;
+  ScreenPass screen_;
+  Program program_;
+};
+
+}  // namespace testbed::revectorization

@@ -1,0 +1,14 @@
+// RPCF + RSMSS (GI 2016 §3.4, eq. 3): PCF over a k×k block of texels whose every sample
+// is s where (d_c)_rg = 0 and the RSMSS visibility otherwise (rsmssVisibility returns s
+// before traversing when there is no discontinuity). Kernel 1 is RSMSS exactly.
+#include "techniques/revectorization/rsmss.glsl"
+#include "techniques/revectorization/rpcf.glsl"
+
+float rpcfRsmssVisibility(vec2 uv, float depth) {
+  int h = uKernel / 2;
+  vec2 texel = 1.0 / vec2(uShadowMapSize);
+  float sum = 0.0;
+  for (int y = -h; y <= h; ++y)
+    for (int x = -h; x <= h; ++x) sum += rsmssVisibility(uv + vec2(x, y) * texel, depth);
+  return sum / float(uKernel * uKernel);
+}

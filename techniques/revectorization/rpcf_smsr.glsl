@@ -1,0 +1,15 @@
+// RPCF + SMSR (GI 2016 §3.4, eq. 2): PCF over a k×k block of texels whose every sample is
+// revectorized with the SMSR visibility. Eq. 2's shortcuts (0 where s = 0, 1 where d_c = 0)
+// are what smsrVisibility does before any traversal. Samples move by whole texels, so
+// each keeps the receiver's sub-texel position p and depth; kernel 1 is SMSR exactly.
+#include "techniques/revectorization/smsr.glsl"
+#include "techniques/revectorization/rpcf.glsl"
+
+float rpcfSmsrVisibility(vec2 uv, float depth) {
+  int h = uKernel / 2;
+  vec2 texel = 1.0 / vec2(uShadowMapSize);
+  float sum = 0.0;
+  for (int y = -h; y <= h; ++y)
+    for (int x = -h; x <= h; ++x) sum += smsrVisibility(uv + vec2(x, y) * texel, depth);
+  return sum / float(uKernel * uKernel);
+}

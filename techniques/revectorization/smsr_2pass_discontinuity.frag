@@ -1,0 +1,21 @@
+#version 450 core
+// smsr-2pass, pass 1 (Bondarev 2014, "First pass"): the compressed discontinuity of every
+// receiver into a screen-space RGBA8 map: rg = d_c of lit texels (entering only), b = 1 − s,
+// a = 1 on receivers. The paper renders the scene a second time here; we read the G-buffer
+// instead, which understates this pass's cost relative to the paper.
+#include "testbed/glsl/receiver.glsl"
+#include "techniques/revectorization/revectorization.glsl"
+
+layout(location = 0) out vec4 outDisc;
+
+void main() {
+  Receiver r;
+  if (!loadReceiver(ivec2(gl_FragCoord.xy), r)) discard;
+  if (facesAwayFromLight(r)) {  // shadowed, no part of the discontinuity computation
+    outDisc = vec4(0.0, 0.0, 1.0, 1.0);
+    return;
+  }
+  vec3 light = lightSpace(r.position);
+  RvSample s = rvSample(light.xy, light.z, false);
+  outDisc = vec4(s.s == 1.0 ? rvCompress(s.d, s.s).rg : vec2(0.0), 1.0 - s.s, 1.0);
+}
