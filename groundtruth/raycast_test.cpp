@@ -20,50 +20,16 @@
 #include "testbed/io/image_io.h"
 #include "testbed/scene/primitives.h"
 #include "tests/gl_fixture.h"
+#include "tests/test_scenes.h"
 
 namespace testbed {
 namespace {
 
-TriMesh translated(TriMesh mesh, OpenMesh::Vec3f offset) {
-  for (auto v : mesh.vertices()) mesh.point(v) += offset;
-  mesh.update_normals();
-  return mesh;
-}
-
-LightDesc directional(glm::vec3 direction, float extent = 40) {
-  LightDesc light;
-  light.type = LightType::Directional;
-  light.direction = glm::normalize(direction);
-  light.target = {0, 0, 0};
-  light.extent = extent;
-  return light;
-}
-
-LightDesc spot(glm::vec3 eye, float fov) {
-  LightDesc light;
-  light.type = LightType::Spot;
-  light.eye = eye;
-  light.target = {0, 0, 0};
-  light.fovDegrees = fov;
-  return light;
-}
-
-Scene floorScene(const std::string& name, const LightDesc& light) {
-  Scene scene;
-  scene.name = name;
-  scene.camera.eye = {28, 34, -30};
-  scene.camera.target = {0, 0, 0};
-  scene.light = light;
-  scene.objects.push_back({"plane", makePlane(80, 80)});
-  return scene;
-}
-
-// Box from y = 10 to 12, x and z in [−5, 5].
-Scene boxOverPlane(const LightDesc& light) {
-  Scene scene = floorScene(light.type == LightType::Spot ? "box-over-plane-spot" : "box-over-plane", light);
-  scene.objects.push_back({"box", translated(makeBox(10, 2, 10), {0, 11, 0})});
-  return scene;
-}
+using test::boxOverPlane;
+using test::directional;
+using test::floorScene;
+using test::spot;
+using test::translated;
 
 constexpr float kSphereRadius = 5;
 constexpr int kSphereSegments = 128, kSphereRings = 64;

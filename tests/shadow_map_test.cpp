@@ -11,27 +11,12 @@
 #include "testbed/app/frame_runner.h"
 #include "testbed/scene/primitives.h"
 #include "tests/gl_fixture.h"
+#include "tests/test_scenes.h"
 
 namespace testbed {
 namespace {
 
-TriMesh translated(TriMesh mesh, OpenMesh::Vec3f offset) {
-  for (auto v : mesh.vertices()) mesh.point(v) += offset;
-  mesh.update_normals();
-  return mesh;
-}
-
-Scene boxOverPlane(const LightDesc& light) {
-  Scene scene;
-  scene.name = "box-over-plane";
-  scene.camera.eye = {28, 34, -30};
-  scene.camera.target = {0, 0, 0};
-  scene.light = light;
-  scene.objects.push_back({"plane", makePlane(80, 80)});
-  // Box from y = 10 to 12, x and z in [-5, 5].
-  scene.objects.push_back({"box", translated(makeBox(10, 2, 10), {0, 11, 0})});
-  return scene;
-}
+using test::boxOverPlane;
 
 struct FloorCheck {
   int checked = 0, inShadowChecked = 0, mismatches = 0;
