@@ -394,6 +394,7 @@ TEST_F(RayCastAgreement, BundledBunny) { expectAgreement(bundled("bunny")); }
 TEST_F(RayCastAgreement, BundledWall) { expectAgreement(bundled("wall")); }
 TEST_F(RayCastAgreement, BundledFence) { expectAgreement(bundled("fence")); }
 TEST_F(RayCastAgreement, BundledDragonSun) { expectAgreement(bundled("dragon_sun")); }
+TEST_F(RayCastAgreement, BundledStackedOccluders) { expectAgreement(bundled("stacked_occluders")); }
 
 // Hard cases (issue 3): none may crash, and both ground truths must still agree.
 

@@ -44,7 +44,7 @@ TEST_P(MetricsOnScenes, CoarseShadowMapIsWorseThanFine) {
   EXPECT_GT(coarse.boundaryMean, fine.boundaryMean);
 }
 
-INSTANTIATE_TEST_SUITE_P(BundledScenes, MetricsOnScenes, ::testing::Values("bunny", "wall", "fence", "dragon_sun"));
+INSTANTIATE_TEST_SUITE_P(BundledScenes, MetricsOnScenes, ::testing::Values("bunny", "wall", "fence", "dragon_sun", "stacked_occluders"));
 
 }  // namespace
 }  // namespace testbed
