@@ -30,8 +30,23 @@ for scene in "$repo"/scenes/*.json; do
     { echo "## $name, $size²"; echo; sed -n '3,$p' "$dir/full/report.md" | sed '/^!\[/d'; echo "[folder]($name-$size/)"; echo; } >> "$index"
   done
 done
+# The revectorization family's debug views (GI 2016 figures 2-3): discontinuity directions
+# and the oriented normalized discontinuity space, for smsr and rsmss on the bunny.
+for technique in smsr rsmss; do
+  for view in discontinuity onds; do
+    "$testbed" render --scene "$repo/scenes/bunny.json" --technique "$technique" --set debug="$view" \
+      --shadow-map 256 --out "$work/debug-full" >/dev/null 2>&1
+    mkdir -p "$work/debug"
+    cp "$work/debug-full/$technique.$view.png" "$work/debug/"
+  done
+  cp "$work/debug-full/$technique.png" "$work/debug/"
+done
+{ echo "## Debug views"; echo
+  echo "[debug/](debug/): \\`testbed render --scene scenes/bunny.json --technique T --set debug=discontinuity|onds --shadow-map 256\\`"
+  echo "for smsr and rsmss: the compressed discontinuity (r, g: directions, b: entering/exiting) and the ONDS."; echo; } >> "$index"
 rm -rf "$repo/results"
 mkdir -p "$repo/results"
-for dir in "$work"/*/; do cp -r "$dir/keep" "$repo/results/$(basename "$dir")"; done
+for dir in "$work"/*-[0-9]*/; do cp -r "$dir/keep" "$repo/results/$(basename "$dir")"; done
+cp -r "$work/debug" "$repo/results/debug"
 cp "$index" "$repo/results/README.md"
 echo "results written to $repo/results" >&2
