@@ -2,9 +2,12 @@
 // Volume triangles, some corners at infinity (w = 0); depth clamp keeps them unclipped.
 layout(location = 0) in vec4 inPosition;
 layout(location = 1) in vec4 inPlane;
+layout(location = 2) in float inLightCap;
 uniform mat4 uViewProjection;
 flat out vec4 vPlane;
+flat out float vLightCap;
 void main() {
   vPlane = inPlane;
+  vLightCap = inLightCap;
   gl_Position = uViewProjection * inPosition;
 }

@@ -152,6 +152,9 @@ class ShadowVolumes final : public ShadowTechnique {
       glEnableVertexArrayAttrib(vao, 1);
       glVertexArrayAttribFormat(vao, 1, 4, GL_FLOAT, GL_FALSE, offsetof(VolumeVertex, plane));
       glVertexArrayAttribBinding(vao, 1, 0);
+      glEnableVertexArrayAttrib(vao, 2);
+      glVertexArrayAttribFormat(vao, 2, 1, GL_FLOAT, GL_FALSE, offsetof(VolumeVertex, lightCap));
+      glVertexArrayAttribBinding(vao, 2, 0);
     }
     if (bytes > 0) glNamedBufferSubData(buffer_.id(), 0, GLsizeiptr(bytes), vertices_.data());
     return GLsizei(vertices_.size());

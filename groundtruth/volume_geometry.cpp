@@ -59,10 +59,11 @@ VolumeStats appendShadowVolume(const VolumeTopology& mesh, const VolumeLight& li
   auto atInfinity = [&](const glm::vec3& p) {
     return light.directional ? glm::vec4(light.direction, 0) : glm::vec4(p - light.position, 0);
   };
-  auto emit = [&](const glm::vec4& p, const glm::vec4& q, const glm::vec4& r, const glm::vec4& plane) {
-    out.push_back({p, plane});
-    out.push_back({q, plane});
-    out.push_back({r, plane});
+  auto emit = [&](const glm::vec4& p, const glm::vec4& q, const glm::vec4& r, const glm::vec4& plane,
+                  float lightCap = 0.0f) {
+    out.push_back({p, plane, lightCap});
+    out.push_back({q, plane, lightCap});
+    out.push_back({r, plane, lightCap});
   };
 
   for (std::size_t f = 0; f < faces; ++f) {
@@ -72,7 +73,7 @@ VolumeStats appendShadowVolume(const VolumeTopology& mesh, const VolumeLight& li
     glm::vec3 corner[3] = {mesh.corners[3 * f], mesh.corners[3 * f + 1], mesh.corners[3 * f + 2]};
     if (facingHere == kAway) std::swap(corner[1], corner[2]);
     const glm::vec4 capPlane = planeThrough(glm::cross(corner[1] - corner[0], corner[2] - corner[0]), corner[0]);
-    emit(glm::vec4(corner[0], 1), glm::vec4(corner[1], 1), glm::vec4(corner[2], 1), capPlane);
+    emit(glm::vec4(corner[0], 1), glm::vec4(corner[1], 1), glm::vec4(corner[2], 1), capPlane, 1.0f);
     ++stats.capTriangles;
     if (!light.directional) {  // a directional dark cap collapses to one point at infinity
       emit(atInfinity(corner[0]), atInfinity(corner[2]), atInfinity(corner[1]), glm::vec4(0, 0, 0, 1));

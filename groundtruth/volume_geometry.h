@@ -27,9 +27,13 @@ struct VolumeLight {
 
 // One vertex of the volume's triangle list. `plane` is the (unit normal, offset) plane of
 // the triangle it belongs to; the plane at infinity of dark caps is (0, 0, 0, 1).
+// `lightCap` is 1 on light caps: a receiver lying in such a plane is the occluder's own
+// lit surface and must count the cap as behind it (a tie broken on purpose). Side faces
+// get 0: a receiver in a side plane is on a true shadow boundary, decided by sign alone.
 struct VolumeVertex {
   glm::vec4 position;  // w = 0 for points extruded to infinity
   glm::vec4 plane;
+  float lightCap;
 };
 
 struct VolumeStats {
