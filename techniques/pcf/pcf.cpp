@@ -2,16 +2,16 @@
 // k×k block of binary depth tests around the receiver's texel that is lit. Filtering the
 // test results (never the depths) is what keeps it free of the light leaks of
 // pre-filtered maps. Optionally each tap is bilinearly weighted ("bilinear PCF").
-#include "testbed/render/receiver_inputs.h"
-#include "testbed/render/screen_pass.h"
-#include "testbed/render/shadow_map_pass.h"
+#include "testbed/render/shadow_map_screen_technique.h"
 #include "testbed/technique/registry.h"
 
 namespace testbed {
 namespace {
 
-class PercentageCloserFiltering final : public ShadowTechnique {
+class PercentageCloserFiltering final : public ShadowMapScreenTechnique {
  public:
+  PercentageCloserFiltering() : ShadowMapScreenTechnique("techniques/pcf/pcf_visibility.frag") {}
+
   static const TechniqueInfo& staticInfo() {
     static const TechniqueInfo info = [] {
       TechniqueInfo i;
@@ -37,30 +37,19 @@ class PercentageCloserFiltering final : public ShadowTechnique {
 
   const TechniqueInfo& info() const override { return staticInfo(); }
 
-  void configure(const ParameterSet& parameters) override {
-    shadowMap_.configure(parameters);
+  void configureOwn(const ParameterSet& parameters) override {
     kernel_ = static_cast<int>(parameters.getInt("kernel"));
     bilinear_ = parameters.getBool("bilinear");
     bias_ = static_cast<float>(parameters.getFloat("bias"));
   }
 
-  void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {
-    if (!program_)
-      program_ = Program::graphics("testbed/render/fullscreen.vert", "techniques/pcf/pcf_visibility.frag");
-    shadowMap_.render(in, timer);
-    auto scope = timer.scope("visibility");
-    bindReceiverInputs(program_, in);
-    bindShadowMap(program_, shadowMap_.depth());
-    program_.set("uBias", bias_);
-    program_.set("uKernel", kernel_);
-    program_.set("uBilinear", bilinear_ ? 1 : 0);
-    screen_.draw(program_, out.framebuffer, in.size);
+  void setUniforms(const Program& program) const override {
+    program.set("uBias", bias_);
+    program.set("uKernel", kernel_);
+    program.set("uBilinear", bilinear_ ? 1 : 0);
   }
 
  private:
-  ShadowMapPass shadowMap_;
-  ScreenPass screen_;
-  Program program_;
   int kernel_ = 3;
   bool bilinear_ = false;
   float bias_ = 0.0f;

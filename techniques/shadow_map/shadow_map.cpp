@@ -1,15 +1,15 @@
 // `sm`: plain shadow mapping (Williams 1978) — one binary depth test per pixel against
 // the nearest-filtered map. The baseline every ratio in the reports is taken against.
-#include "testbed/render/receiver_inputs.h"
-#include "testbed/render/screen_pass.h"
-#include "testbed/render/shadow_map_pass.h"
+#include "testbed/render/shadow_map_screen_technique.h"
 #include "testbed/technique/registry.h"
 
 namespace testbed {
 namespace {
 
-class PlainShadowMap final : public ShadowTechnique {
+class PlainShadowMap final : public ShadowMapScreenTechnique {
  public:
+  PlainShadowMap() : ShadowMapScreenTechnique("techniques/shadow_map/shadow_map_visibility.frag") {}
+
   static const TechniqueInfo& staticInfo() {
     static const TechniqueInfo info = [] {
       TechniqueInfo i;
@@ -28,27 +28,12 @@ class PlainShadowMap final : public ShadowTechnique {
 
   const TechniqueInfo& info() const override { return staticInfo(); }
 
-  void configure(const ParameterSet& parameters) override {
-    shadowMap_.configure(parameters);
+  void configureOwn(const ParameterSet& parameters) override {
     bias_ = static_cast<float>(parameters.getFloat("bias"));
   }
-
-  void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {
-    if (!program_)
-      program_ = Program::graphics("testbed/render/fullscreen.vert",
-                                   "techniques/shadow_map/shadow_map_visibility.frag");
-    shadowMap_.render(in, timer);
-    auto scope = timer.scope("visibility");
-    bindReceiverInputs(program_, in);
-    bindShadowMap(program_, shadowMap_.depth());
-    program_.set("uBias", bias_);
-    screen_.draw(program_, out.framebuffer, in.size);
-  }
+  void setUniforms(const Program& program) const override { program.set("uBias", bias_); }
 
  private:
-  ShadowMapPass shadowMap_;
-  ScreenPass screen_;
-  Program program_;
   float bias_ = 0.0f;
 };
 

@@ -1,0 +1,22 @@
+#include "testbed/render/shadow_map_screen_technique.h"
+
+#include "testbed/render/receiver_inputs.h"
+
+namespace testbed {
+
+void ShadowMapScreenTechnique::configure(const ParameterSet& parameters) {
+  shadowMap_.configure(parameters);
+  configureOwn(parameters);
+}
+
+void ShadowMapScreenTechnique::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
+  if (!program_) program_ = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_);
+  shadowMap_.render(in, timer);
+  auto scope = timer.scope("visibility");
+  bindReceiverInputs(program_, in);
+  bindShadowMap(program_, shadowMap_.depth());
+  setUniforms(program_);
+  screen_.draw(program_, out.framebuffer, in.size);
+}
+
+}  // namespace testbed
