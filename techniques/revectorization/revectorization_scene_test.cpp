@@ -3,12 +3,14 @@
 // the closing note.
 //
 // What the data says (and these tests assert): improved SMSR (seed 004 eq. 7) beats sm on
-// edge_mismatch_pct everywhere; conservative SMSR (eq. 4, the GI 2016 function and smsr's
+// edge_mismatch_pct everywhere but on axis-aligned thin stripes (stacked_occluders, see
+// below); conservative SMSR (eq. 4, the GI 2016 function and smsr's
 // default) does not: on an ideal staircase its line is the true line moved half a texel
 // into the lit side (RevectorizationGlsl.ConservativeLineIsTheTrueLineHalfATexelIntoTheLitSide),
 // so its boundary error is larger than sm's stair; its figures are printed, not asserted
-// against sm. Improved never overestimates more than conservative; the filtered variants
-// add no leak.
+// against sm. Improved overestimates less than conservative, which overestimates more
+// than sm (both measured next to the boundary, where they differ); the filtered variants
+// add no leak except RSMSS's opened stripe tips on stacked_occluders.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -26,17 +28,26 @@ namespace {
 
 using Assignments = std::map<std::string, std::string>;
 
-ErrorMetrics measure(FrameRunner& runner, const ImageF& truth, const std::string& id, const Assignments& set,
-                     const std::string& label, const std::string& scene, int mapSize) {
+// The contract's metrics, plus overestimation over every GT-lit pixel but the boundary
+// pixels themselves (margin 0.5 px): the default 8 px margin hides the sub-texel
+// overestimation that tells the two SMSR visibility functions apart.
+struct Measured {
+  ErrorMetrics m;
+  double overestimationNearPct = 0;
+};
+
+Measured measure(FrameRunner& runner, const ImageF& truth, const std::string& id, const Assignments& set,
+                 const std::string& label, const std::string& scene, int mapSize) {
   const auto& technique = findTechnique(id);
   const ImageF v = runner.run(technique, resolveParameters(id, technique.info->parameters, set)).visibility;
-  const ErrorMetrics m = computeErrorMetrics(v, truth);
-  char line[240];
-  std::snprintf(line, sizeof line, "%-10s %4d  %-18s %8.3f %7.2f %9.3f %9.3f %7.3f %7.3f %8.4f\n", scene.c_str(),
-                mapSize, label.c_str(), m.mismatchPct, m.edgeMismatchPct, m.boundaryMean, m.boundaryP95, m.leakPct,
-                m.overestimationPct, m.rmse);
+  Measured r{computeErrorMetrics(v, truth), computeErrorMetrics(v, truth, nullptr, {.marginPx = 0.5}).overestimationPct};
+  const ErrorMetrics& m = r.m;
+  char line[260];
+  std::snprintf(line, sizeof line, "%-10s %4d  %-18s %8.3f %7.2f %9.3f %9.3f %7.3f %7.3f %9.3f %8.4f\n",
+                scene.c_str(), mapSize, label.c_str(), m.mismatchPct, m.edgeMismatchPct, m.boundaryMean, m.boundaryP95,
+                m.leakPct, m.overestimationPct, r.overestimationNearPct, m.rmse);
   std::cout << line << std::flush;
-  return m;
+  return r;
 }
 
 class RevectorizationScene : public ::testing::Test {
@@ -45,8 +56,9 @@ class RevectorizationScene : public ::testing::Test {
 };
 
 TEST_F(RevectorizationScene, AgainstShadowVolumesOnTheBundledScenes) {
-  std::cout << "scene      map   technique          mismatch%  edge%  bnd_mean   bnd_p95   leak%  overest%   rmse\n";
-  for (const std::string name : {"bunny", "wall", "fence", "dragon_sun"})
+  std::cout << "scene      map   technique          mismatch%  edge%  bnd_mean   bnd_p95   leak%  overest%  "
+               "over@0.5px rmse\n";
+  for (const std::string name : {"bunny", "wall", "fence", "dragon_sun", "stacked_occluders"})
     for (const int mapSize : {256, 512}) {
       SCOPED_TRACE(name + " " + std::to_string(mapSize));
       const Scene scene = loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/" + name + ".json");
@@ -62,20 +74,34 @@ TEST_F(RevectorizationScene, AgainstShadowVolumesOnTheBundledScenes) {
       auto run = [&](const std::string& id, const Assignments& set, const std::string& label) {
         return measure(runner, truth, id, set, label, name, mapSize);
       };
-      const ErrorMetrics sm = run("sm", {}, "sm");
-      const ErrorMetrics conservative = run("smsr", {}, "smsr");
-      const ErrorMetrics improved = run("smsr", {{"visibility", "improved"}}, "smsr improved");
-      const ErrorMetrics rsmss = run("rsmss", {}, "rsmss");
-      const ErrorMetrics rpcfSmsr = run("rpcf-smsr", {}, "rpcf-smsr");
-      const ErrorMetrics rpcfRsmss = run("rpcf-rsmss", {}, "rpcf-rsmss");
+      const Measured sm = run("sm", {}, "sm");
+      const Measured conservative = run("smsr", {}, "smsr");
+      const Measured improved = run("smsr", {{"visibility", "improved"}}, "smsr improved");
+      const Measured twoPass = run("smsr-2pass", {}, "smsr-2pass");
+      const Measured rsmss = run("rsmss", {}, "rsmss");
+      const Measured rpcfSmsr = run("rpcf-smsr", {}, "rpcf-smsr");
+      const Measured rpcfRsmss = run("rpcf-rsmss", {}, "rpcf-rsmss");
 
-      EXPECT_LT(improved.edgeMismatchPct, sm.edgeMismatchPct);
-      EXPECT_LE(improved.overestimationPct, conservative.overestimationPct);
+      // stacked_occluders: shadows of thin bars (2.5 texels at 256²) whose edges run along
+      // a map axis. Every convex corner of such a stripe is, texel for texel, a stair step,
+      // so the L rule opens its tip (improved, RSMSS) over up to max_search/2 texels: there
+      // improved SMSR is worse than sm on edge mismatch and RSMSS leaks (figures printed;
+      // README, "Revectorization on the bundled scenes").
+      const bool axisAlignedStripes = name == "stacked_occluders";
+      if (!axisAlignedStripes) {
+        EXPECT_LT(improved.m.edgeMismatchPct, sm.m.edgeMismatchPct);
+        EXPECT_LE(rsmss.m.leakPct, sm.m.leakPct);
+        EXPECT_LE(rpcfRsmss.m.leakPct, sm.m.leakPct);
+      }
+      EXPECT_LE(improved.m.overestimationPct, conservative.m.overestimationPct);
+      // Near the boundary, where the two functions differ, improved overestimates strictly
+      // less (seed 004's claim); conservative overestimates more than sm's stair there.
+      EXPECT_LT(improved.overestimationNearPct, conservative.overestimationNearPct);
+      EXPECT_GT(conservative.overestimationNearPct, sm.overestimationNearPct);
       // Conservative SMSR only adds shadow: it cannot leak where sm does not.
-      EXPECT_LE(conservative.leakPct, sm.leakPct);
-      EXPECT_LE(rsmss.leakPct, sm.leakPct);
-      EXPECT_LE(rpcfSmsr.leakPct, sm.leakPct);
-      EXPECT_LE(rpcfRsmss.leakPct, sm.leakPct);
+      EXPECT_LE(conservative.m.leakPct, sm.m.leakPct);
+      EXPECT_LE(twoPass.m.leakPct, sm.m.leakPct);
+      EXPECT_LE(rpcfSmsr.m.leakPct, sm.m.leakPct);
     }
 }
 
