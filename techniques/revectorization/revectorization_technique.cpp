@@ -51,6 +51,10 @@ void Common::configure(const ParameterSet& parameters) {
 
 void Common::bindLibrary(const Program& program, const Texture& shadowMap) const {
   bindShadowMap(program, shadowMap);
+  setLibraryUniforms(program);
+}
+
+void Common::setLibraryUniforms(const Program& program) const {
   program.set("uMaxSearch", maxSearch_);
   program.set("uEpsilon", epsilon_);
   program.set("uBias", bias_);
@@ -93,24 +97,19 @@ std::vector<std::pair<std::string, ImageF>> Common::debugImages() const {
   return {};
 }
 
-void SinglePassTechnique::configure(const ParameterSet& parameters) {
-  shadowMap_.configure(parameters);
+void SinglePassTechnique::configureOwn(const ParameterSet& parameters) {
   common_.configure(parameters);
-  configureOwn(parameters);
+  configureTechnique(parameters);
 }
 
-void SinglePassTechnique::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
-  if (!program_) program_ = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_);
-  shadowMap_.render(in, timer);
-  {
-    auto scope = timer.scope("revectorize");
-    bindReceiverInputs(program_, in);
-    common_.bindLibrary(program_, shadowMap_.depth());
-    setOwnUniforms(program_);
-    screen_.draw(program_, out.framebuffer, in.size);
-  }
-  // Untimed: the debug view never changes the timed pass.
-  common_.renderDebug(in, shadowMap_.depth(), bothSides_);
+void SinglePassTechnique::setUniforms(const Program& program) const {
+  common_.setLibraryUniforms(program);
+  setTechniqueUniforms(program);
+}
+
+// Untimed: the debug view never changes the timed pass.
+void SinglePassTechnique::afterTimedPasses(const FrameInputs& in, const Texture& shadowMap) {
+  common_.renderDebug(in, shadowMap, bothSides_);
 }
 
 }  // namespace testbed::revectorization

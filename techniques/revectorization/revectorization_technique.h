@@ -8,6 +8,7 @@
 
 #include "testbed/render/screen_pass.h"
 #include "testbed/render/shadow_map_pass.h"
+#include "testbed/render/shadow_map_screen_technique.h"
 #include "testbed/technique/technique.h"
 
 namespace testbed::revectorization {
@@ -28,7 +29,8 @@ enum class DebugView { None, Discontinuity, Onds };
 class Common {
  public:
   void configure(const ParameterSet& parameters);
-  // Uniforms of revectorization.glsl (and the shadow map binding).
+  // Uniforms of revectorization.glsl; bindLibrary also binds the shadow map.
+  void setLibraryUniforms(const Program& program) const;
   void bindLibrary(const Program& program, const Texture& shadowMap) const;
   // When a debug view was asked for, draws it (outside any timed scope) and reads it back.
   // `bothSides` false shows entering discontinuities only.
@@ -47,27 +49,24 @@ class Common {
 };
 
 // A technique made of the shared shadow map and one screen pass, timed "revectorize".
-class SinglePassTechnique : public ShadowTechnique {
+class SinglePassTechnique : public ShadowMapScreenTechnique {
  public:
-  void configure(const ParameterSet& parameters) override;
-  void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override;
   std::vector<std::pair<std::string, ImageF>> debugImages() const override { return common_.debugImages(); }
 
  protected:
   // `fragmentKey`: the technique's shader; `bothSides`: whether exiting discontinuities
   // take part (debug view only; the shader decides for itself).
   SinglePassTechnique(std::string fragmentKey, bool bothSides)
-      : bothSides_(bothSides), fragmentKey_(std::move(fragmentKey)) {}
-  virtual void configureOwn(const ParameterSet& parameters) = 0;
-  virtual void setOwnUniforms(const Program& program) const = 0;
+      : ShadowMapScreenTechnique(std::move(fragmentKey), "revectorize"), bothSides_(bothSides) {}
+  virtual void configureTechnique(const ParameterSet& parameters) = 0;
+  virtual void setTechniqueUniforms(const Program& program) const = 0;
   bool bothSides_;
 
  private:
-  std::string fragmentKey_;
+  void configureOwn(const ParameterSet& parameters) final;
+  void setUniforms(const Program& program) const final;
+  void afterTimedPasses(const FrameInputs& in, const Texture& shadowMap) final;
   Common common_;
-  ShadowMapPass shadowMap_;
-  ScreenPass screen_;
-  Program program_;
 };
 
 }  // namespace testbed::revectorization

@@ -29,12 +29,12 @@ class RpcfSmsr final : public SinglePassTechnique {
   const TechniqueInfo& info() const override { return staticInfo(); }
 
  private:
-  void configureOwn(const ParameterSet& parameters) override {
+  void configureTechnique(const ParameterSet& parameters) override {
     kernel_ = static_cast<int>(parameters.getInt("kernel"));
     improved_ = parameters.getChoice("visibility") == "improved";
     bothSides_ = improved_;
   }
-  void setOwnUniforms(const Program& program) const override {
+  void setTechniqueUniforms(const Program& program) const override {
     program.set("uKernel", kernel_);
     program.set("uImproved", improved_ ? 1 : 0);
   }
@@ -62,8 +62,8 @@ class RpcfRsmss final : public SinglePassTechnique {
   const TechniqueInfo& info() const override { return staticInfo(); }
 
  private:
-  void configureOwn(const ParameterSet& parameters) override { kernel_ = static_cast<int>(parameters.getInt("kernel")); }
-  void setOwnUniforms(const Program& program) const override { program.set("uKernel", kernel_); }
+  void configureTechnique(const ParameterSet& parameters) override { kernel_ = static_cast<int>(parameters.getInt("kernel")); }
+  void setTechniqueUniforms(const Program& program) const override { program.set("uKernel", kernel_); }
   int kernel_ = 3;
 };
 

@@ -27,8 +27,8 @@ class Rsmss final : public SinglePassTechnique {
   const TechniqueInfo& info() const override { return staticInfo(); }
 
  private:
-  void configureOwn(const ParameterSet&) override {}
-  void setOwnUniforms(const Program&) const override {}
+  void configureTechnique(const ParameterSet&) override {}
+  void setTechniqueUniforms(const Program&) const override {}
 };
 
 }  // namespace

@@ -28,11 +28,11 @@ class Smsr final : public SinglePassTechnique {
   const TechniqueInfo& info() const override { return staticInfo(); }
 
  private:
-  void configureOwn(const ParameterSet& parameters) override {
+  void configureTechnique(const ParameterSet& parameters) override {
     improved_ = parameters.getChoice("visibility") == "improved";
     bothSides_ = improved_;  // the improved function traverses the shadowed side too
   }
-  void setOwnUniforms(const Program& program) const override { program.set("uImproved", improved_ ? 1 : 0); }
+  void setTechniqueUniforms(const Program& program) const override { program.set("uImproved", improved_ ? 1 : 0); }
   bool improved_ = false;
 };
 

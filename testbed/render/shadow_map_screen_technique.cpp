@@ -12,11 +12,14 @@ void ShadowMapScreenTechnique::configure(const ParameterSet& parameters) {
 void ShadowMapScreenTechnique::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
   if (!program_) program_ = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_);
   shadowMap_.render(in, timer);
-  auto scope = timer.scope("visibility");
-  bindReceiverInputs(program_, in);
-  bindShadowMap(program_, shadowMap_.depth());
-  setUniforms(program_);
-  screen_.draw(program_, out.framebuffer, in.size);
+  {
+    auto scope = timer.scope(passName_);
+    bindReceiverInputs(program_, in);
+    bindShadowMap(program_, shadowMap_.depth());
+    setUniforms(program_);
+    screen_.draw(program_, out.framebuffer, in.size);
+  }
+  afterTimedPasses(in, shadowMap_.depth());
 }
 
 }  // namespace testbed

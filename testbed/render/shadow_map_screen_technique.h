@@ -1,9 +1,11 @@
 #pragma once
-// The shape of the simplest techniques (sm, pcf): the shared shadow map, then one
-// full-screen pass ("visibility") running the technique's own fragment shader with the
-// receiver and shadow-map uniforms bound. A subclass names its shader, reads its own
-// parameters and sets its own uniforms; the passes, timing and bindings live here once.
+// The shape of the simplest techniques (sm, pcf, the single-pass revectorization family):
+// the shared shadow map, then one timed full-screen pass running the technique's own
+// fragment shader with the receiver and shadow-map uniforms bound. A subclass names its
+// shader and pass, reads its own parameters and sets its own uniforms; the passes, timing
+// and bindings live here once.
 #include <string>
+#include <utility>
 
 #include "testbed/render/screen_pass.h"
 #include "testbed/render/shadow_map_pass.h"
@@ -17,14 +19,17 @@ class ShadowMapScreenTechnique : public ShadowTechnique {
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) final;
 
  protected:
-  // `fragmentKey`: the embedded shader of the visibility pass.
-  explicit ShadowMapScreenTechnique(std::string fragmentKey) : fragmentKey_(std::move(fragmentKey)) {}
+  // `fragmentKey`: the embedded shader of the screen pass; `passName`: its timer scope.
+  explicit ShadowMapScreenTechnique(std::string fragmentKey, std::string passName = "visibility")
+      : fragmentKey_(std::move(fragmentKey)), passName_(std::move(passName)) {}
   // The technique's parameters beyond ShadowMapPass::parameters().
   virtual void configureOwn(const ParameterSet& parameters) = 0;
   virtual void setUniforms(const Program& program) const = 0;
+  // Runs after the timed passes, outside any timer scope (debug views).
+  virtual void afterTimedPasses(const FrameInputs&, const Texture& /*shadowMap*/) {}
 
  private:
-  std::string fragmentKey_;
+  std::string fragmentKey_, passName_;
   ShadowMapPass shadowMap_;
   ScreenPass screen_;
   Program program_;
