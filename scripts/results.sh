@@ -32,7 +32,7 @@ for scene in "$repo"/scenes/*.json; do
 done
 # The revectorization family's debug views (GI 2016 figures 2-3): discontinuity directions
 # and the oriented normalized discontinuity space, for smsr and rsmss on the bunny.
-for technique in smsr rsmss; do
+for technique in smsr smsr-2pass rsmss; do
   for view in discontinuity onds; do
     "$testbed" render --scene "$repo/scenes/bunny.json" --technique "$technique" --set debug="$view" \
       --shadow-map 256 --out "$work/debug-full" >/dev/null 2>&1
@@ -42,8 +42,8 @@ for technique in smsr rsmss; do
   cp "$work/debug-full/$technique.png" "$work/debug/"
 done
 { echo "## Debug views"; echo
-  echo "[debug/](debug/): \\`testbed render --scene scenes/bunny.json --technique T --set debug=discontinuity|onds --shadow-map 256\\`"
-  echo "for smsr and rsmss: the compressed discontinuity (r, g: directions, b: entering/exiting) and the ONDS."; echo; } >> "$index"
+  echo '[debug/](debug/): `testbed render --scene scenes/bunny.json --technique T --set debug=discontinuity|onds --shadow-map 256`'
+  echo "for smsr, smsr-2pass (its own screen-space map and search; b = 1 on every shadowed receiver) and rsmss: the compressed discontinuity (r, g: directions, b: entering/exiting) and the ONDS."; echo; } >> "$index"
 rm -rf "$repo/results"
 mkdir -p "$repo/results"
 for dir in "$work"/*-[0-9]*/; do cp -r "$dir/keep" "$repo/results/$(basename "$dir")"; done

@@ -127,27 +127,43 @@ TEST_F(RevectorizationScene, RpcfKernelOneEqualsItsBaseOnAScene) {
 }
 
 // Debug views: asked for, they come back as named RGB images of the screen's size with
-// some coloured (edge) pixels; not asked for, there are none.
+// some coloured (edge) pixels; not asked for, there are none. smsr-2pass shows its own
+// screen-space map, which on lit receivers holds the same d_c as smsr's light-space view.
 TEST_F(RevectorizationScene, DebugViewsAreReturnedOnlyWhenAsked) {
   const Scene scene = loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/bunny.json");
   RenderSettings settings;
   settings.size = {320, 180};
   settings.shadowMapSize = 256;
   FrameRunner runner(scene, settings);
-  const auto& technique = findTechnique("smsr");
-  EXPECT_TRUE(runner.run(technique, resolveParameters("smsr", technique.info->parameters, {})).debugImages.empty());
-  for (const std::string view : {"discontinuity", "onds"}) {
-    const auto run = runner.run(technique, resolveParameters("smsr", technique.info->parameters, {{"debug", view}}));
-    ASSERT_EQ(run.debugImages.size(), 1u);
-    EXPECT_EQ(run.debugImages[0].first, view);
-    const ImageF& image = run.debugImages[0].second;
-    EXPECT_EQ(image.width, 320);
-    EXPECT_EQ(image.height, 180);
-    EXPECT_EQ(image.channels, 3);
-    int coloured = 0;
-    for (const float v : image.pixels) coloured += v > 0.0f;
-    EXPECT_GT(coloured, 10);
+  std::map<std::string, ImageF> views;
+  for (const std::string id : {"smsr", "smsr-2pass"}) {
+    SCOPED_TRACE(id);
+    const auto& technique = findTechnique(id);
+    EXPECT_TRUE(runner.run(technique, resolveParameters(id, technique.info->parameters, {})).debugImages.empty());
+    for (const std::string view : {"discontinuity", "onds"}) {
+      const auto run = runner.run(technique, resolveParameters(id, technique.info->parameters, {{"debug", view}}));
+      ASSERT_EQ(run.debugImages.size(), 1u);
+      EXPECT_EQ(run.debugImages[0].first, view);
+      const ImageF& image = run.debugImages[0].second;
+      EXPECT_EQ(image.width, 320);
+      EXPECT_EQ(image.height, 180);
+      EXPECT_EQ(image.channels, 3);
+      int coloured = 0;
+      for (const float v : image.pixels) coloured += v > 0.0f;
+      EXPECT_GT(coloured, 10);
+      views[id + "." + view] = image;
+    }
   }
+  const ImageF& single = views["smsr.discontinuity"];
+  const ImageF& two = views["smsr-2pass.discontinuity"];
+  int litEdges = 0, differing = 0;
+  for (std::size_t i = 0; i < two.pixels.size(); i += 3) {
+    if (two.pixels[i + 2] != 0.0f) continue;  // b = 1 − s: shadowed receivers
+    litEdges += two.pixels[i] > 0.0f || two.pixels[i + 1] > 0.0f;
+    differing += two.pixels[i] != single.pixels[i] || two.pixels[i + 1] != single.pixels[i + 1];
+  }
+  EXPECT_GT(litEdges, 10);
+  EXPECT_EQ(differing, 0);
 }
 
 }  // namespace

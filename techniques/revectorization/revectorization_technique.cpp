@@ -64,28 +64,35 @@ void Common::renderDebug(const FrameInputs& in, const Texture& shadowMap, bool b
   if (debug_ == DebugView::None) return;
   if (!debugProgram_)
     debugProgram_ = Program::graphics("testbed/render/fullscreen.vert", "techniques/revectorization/debug.frag");
-  if (!debugTexture_ || debugTexture_.width() != in.size.x || debugTexture_.height() != in.size.y) {
-    debugTexture_ = Texture::create2D(GL_RGBA8, in.size.x, in.size.y);
+  bindReceiverInputs(debugProgram_, in);
+  bindLibrary(debugProgram_, shadowMap);
+  debugProgram_.set("uDebugView", debug_ == DebugView::Discontinuity ? 1 : 2);
+  debugProgram_.set("uBothSides", bothSides ? 1 : 0);
+  renderDebugWith(debugProgram_, in.size);
+}
+
+void Common::renderDebugWith(const Program& program, glm::ivec2 size) {
+  if (!debugTexture_ || debugTexture_.width() != size.x || debugTexture_.height() != size.y) {
+    debugTexture_ = Texture::create2D(GL_RGBA8, size.x, size.y);
     debugTarget_ = Framebuffer::create();
     debugTarget_.attachColor(0, debugTexture_);
     debugTarget_.finish({0});
   }
   const float black[4] = {0, 0, 0, 1};
   glClearNamedFramebufferfv(debugTarget_.id(), GL_COLOR, 0, black);
-  bindReceiverInputs(debugProgram_, in);
-  bindLibrary(debugProgram_, shadowMap);
-  debugProgram_.set("uDebugView", debug_ == DebugView::Discontinuity ? 1 : 2);
-  debugProgram_.set("uBothSides", bothSides ? 1 : 0);
-  screen_.draw(debugProgram_, debugTarget_, in.size);
+  screen_.draw(program, debugTarget_, size);
+  captureDebug(debugTexture_, size);
+}
 
-  // Read back RGB, flipped to top-down as image files store it.
-  const std::vector<float> rgba = debugTexture_.readFloats(4);
-  debugImage_ = ImageF{in.size.x, in.size.y, 3, std::vector<float>(std::size_t(in.size.x) * in.size.y * 3)};
-  for (int y = 0; y < in.size.y; ++y)
-    for (int x = 0; x < in.size.x; ++x)
+void Common::captureDebug(const Texture& rgba8, glm::ivec2 size) {
+  // RGB, flipped to top-down as image files store it.
+  const std::vector<float> rgba = rgba8.readFloats(4);
+  debugImage_ = ImageF{size.x, size.y, 3, std::vector<float>(std::size_t(size.x) * size.y * 3)};
+  for (int y = 0; y < size.y; ++y)
+    for (int x = 0; x < size.x; ++x)
       for (int c = 0; c < 3; ++c)
-        debugImage_.pixels[(std::size_t(in.size.y - 1 - y) * in.size.x + x) * 3 + c] =
-            rgba[(std::size_t(y) * in.size.x + x) * 4 + c];
+        debugImage_.pixels[(std::size_t(size.y - 1 - y) * size.x + x) * 3 + c] =
+            rgba[(std::size_t(y) * size.x + x) * 4 + c];
 }
 
 std::vector<std::pair<std::string, ImageF>> Common::debugImages() const {

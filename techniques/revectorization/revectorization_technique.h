@@ -32,9 +32,14 @@ class Common {
   // Uniforms of revectorization.glsl; bindLibrary also binds the shadow map.
   void setLibraryUniforms(const Program& program) const;
   void bindLibrary(const Program& program, const Texture& shadowMap) const;
-  // When a debug view was asked for, draws it (outside any timed scope) and reads it back.
-  // `bothSides` false shows entering discontinuities only.
+  // When a debug view was asked for, draws the light-space one (debug.frag) outside any
+  // timed scope and reads it back. `bothSides` false shows entering discontinuities only.
   void renderDebug(const FrameInputs& in, const Texture& shadowMap, bool bothSides);
+  // For techniques with views of their own: draw `program` (its inputs already bound)
+  // into the debug target and read it back, or read back an RGBA8 texture of theirs.
+  void renderDebugWith(const Program& program, glm::ivec2 size);
+  void captureDebug(const Texture& rgba8, glm::ivec2 size);
+  DebugView debugView() const { return debug_; }
   std::vector<std::pair<std::string, ImageF>> debugImages() const;
 
  private:

@@ -1,9 +1,11 @@
 // `smsr-2pass`: Bondarev's original two-pass shadow map silhouette revectorization
 // (I3D 2014 poster; seed 001): pass 1 writes the compressed discontinuity of every pixel
 // into a screen-size RGBA8 discontinuity map, pass 2 searches that map in screen space for
-// the edge's ends and clips the ONDS (entering discontinuities only). The paper's second
-// scene pass is replaced by a G-buffer read (the testbed is deferred), which understates
-// its cost relative to the paper; the map's memory is booked by the GL wrappers.
+// the edge's ends and clips the ONDS (entering discontinuities only). As in Bondarev's
+// listing, pass 1 is a screen pass over a buffer of world positions (our G-buffer), not a
+// second scene pass; the map's memory is booked by the GL wrappers. Its debug views are
+// its own: debug=discontinuity writes the screen-space map pass 2 searches (rg = d_c,
+// b = 1 − s), debug=onds what that search measured.
 #include "techniques/revectorization/revectorization_technique.h"
 #include "testbed/render/receiver_inputs.h"
 #include "testbed/technique/registry.h"
@@ -58,23 +60,42 @@ class SmsrTwoPass final : public ShadowTechnique {
     }
     {
       auto scope = timer.scope("revectorize");
-      bindReceiverInputs(revectorizeProgram_, in);
-      common_.bindLibrary(revectorizeProgram_, shadowMap_.depth());
+      bindSearchInputs(revectorizeProgram_, in);
       revectorizeProgram_.set("uImproved", 0);
-      glBindTextureUnit(3, discMap_.id());
-      revectorizeProgram_.set("uDiscontinuityMap", 3);
       screen_.draw(revectorizeProgram_, out.framebuffer, in.size);
     }
-    common_.renderDebug(in, shadowMap_.depth(), false);  // untimed
+    renderDebug(in);  // untimed
   }
 
   std::vector<std::pair<std::string, ImageF>> debugImages() const override { return common_.debugImages(); }
 
  private:
+  // The inputs of smsr_2pass_search.glsl: receivers, shadow map, library, pass 1's map.
+  void bindSearchInputs(const Program& program, const FrameInputs& in) const {
+    bindReceiverInputs(program, in);
+    common_.bindLibrary(program, shadowMap_.depth());
+    glBindTextureUnit(3, discMap_.id());
+    program.set("uDiscontinuityMap", 3);
+  }
+
+  void renderDebug(const FrameInputs& in) {
+    switch (common_.debugView()) {
+      case DebugView::None: return;
+      case DebugView::Discontinuity: common_.captureDebug(discMap_, in.size); return;
+      case DebugView::Onds:
+        if (!ondsProgram_)
+          ondsProgram_ = Program::graphics("testbed/render/fullscreen.vert",
+                                           "techniques/revectorization/smsr_2pass_onds.frag");
+        bindSearchInputs(ondsProgram_, in);
+        common_.renderDebugWith(ondsProgram_, in.size);
+        return;
+    }
+  }
+
   Common common_;
   ShadowMapPass shadowMap_;
   ScreenPass screen_;
-  Program discProgram_, revectorizeProgram_;
+  Program discProgram_, revectorizeProgram_, ondsProgram_;
   Texture discMap_;
   Framebuffer discTarget_;
 };

@@ -1,8 +1,8 @@
 #version 450 core
 // smsr-2pass, pass 1 (Bondarev 2014, "First pass"): the compressed discontinuity of every
 // receiver into a screen-space RGBA8 map: rg = d_c of lit texels (entering only), b = 1 − s,
-// a = 1 on receivers. The paper renders the scene a second time here; we read the G-buffer
-// instead, which understates this pass's cost relative to the paper.
+// a = 1 on receivers. Like Bondarev's listing, it is a screen pass reading the receivers'
+// world positions from a buffer (his inTexPosition; our G-buffer).
 #include "testbed/glsl/receiver.glsl"
 #include "techniques/revectorization/revectorization.glsl"
 

@@ -1,44 +1,12 @@
 #version 450 core
-// smsr-2pass, pass 2 (Bondarev 2014, "Second pass" and merge): for a lit pixel with an
-// entering discontinuity, search the screen-space discontinuity map along the two light
-// axes for the edge's end. The screen step that reaches the neighbouring shadow-map texel
-// comes from the receiver's local plane: the pixel-to-light-uv Jacobian from the G-buffer
-// positions of the pixel's neighbours, inverted. A step ends the edge (end found) on a
-// shadowed receiver; it stops without an end off the receivers, on a lit pixel sharing
-// no discontinuity direction, or after max_search steps. The ONDS and the clipping are
-// single-pass SMSR's conservative ones (smsr.glsl, seed 004 eq. 4).
-#include "testbed/glsl/receiver.glsl"
+// smsr-2pass, pass 2 and merge (Bondarev 2014): the screen-space search of
+// smsr_2pass_search.glsl, then single-pass SMSR's conservative clipping of the ONDS
+// (smsr.glsl, seed 004 eq. 4): Bondarev's own clipping function is not given in full
+// (GI 2016 §4.1 says so), and the conservative one is its single-pass successor.
+#include "techniques/revectorization/smsr_2pass_search.glsl"
 #include "techniques/revectorization/smsr.glsl"
 
-uniform sampler2D uDiscontinuityMap;
 layout(location = 0) out float outVisibility;
-
-vec4 decodeDirections(vec2 rg) {
-  ivec2 k = ivec2(round(rg * 4.0));
-  return vec4(k.x >= 2, (k.x & 1) == 1, k.y >= 2, (k.y & 1) == 1);
-}
-
-int searchScreen(vec2 start, vec2 stepPx, vec4 dOrigin) {
-  vec2 size = vec2(textureSize(uDiscontinuityMap, 0));
-  vec2 pos = start;
-  int n = 1;
-  for (int i = 0; i < uMaxSearch; ++i) {
-    pos += stepPx;
-    if (any(lessThan(pos, vec2(0.0))) || any(greaterThanEqual(pos, size))) return -n;
-    vec4 disc = texelFetch(uDiscontinuityMap, ivec2(pos), 0);
-    if (disc.a < 0.5) return -n;   // no receiver there
-    if (disc.b > 0.5) return n;    // shadowed receiver: the edge's end
-    if (dot(decodeDirections(disc.rg), dOrigin) == 0.0) return -n;
-    ++n;
-  }
-  return -n;
-}
-
-// Light-space uv of the receiver at pixel q (or of p when q has none).
-vec2 lightUvAt(ivec2 q, vec2 fallback) {
-  vec4 position = texelFetch(uGPosition, q, 0);
-  return position.w > 0.5 ? lightSpace(position.xyz).xy : fallback;
-}
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
@@ -48,42 +16,6 @@ void main() {
     outVisibility = 0.0;
     return;
   }
-  vec4 disc = texelFetch(uDiscontinuityMap, pixel, 0);
-  if (disc.b > 0.5 || disc.rg == vec2(0.0)) {
-    outVisibility = 1.0 - disc.b;
-    return;
-  }
-  vec3 light = lightSpace(r.position);
-  // d(light texel)/d(pixel), one-sided differences; a neighbour off the receivers falls
-  // back to the other side.
-  vec2 texels = vec2(uShadowMapSize);
-  vec2 uv = light.xy;
-  vec2 dx = lightUvAt(pixel + ivec2(1, 0), uv) - uv;
-  if (dx == vec2(0.0)) dx = uv - lightUvAt(pixel - ivec2(1, 0), uv);
-  vec2 dy = lightUvAt(pixel + ivec2(0, 1), uv) - uv;
-  if (dy == vec2(0.0)) dy = uv - lightUvAt(pixel - ivec2(0, 1), uv);
-  mat2 jacobian = mat2(dx * texels, dy * texels);  // columns: per pixel x, per pixel y
-  float det = determinant(jacobian);
-  if (abs(det) < 1e-8) {
-    outVisibility = 1.0;
-    return;
-  }
-  mat2 inverse_ = inverse(jacobian);  // light texels → pixels
-  vec2 stepX = inverse_ * vec2(1.0, 0.0), stepY = inverse_ * vec2(0.0, 1.0);
-  // A texel smaller than a pixel has no visible stair to revectorize.
-  if (length(stepX) < 1.0 || length(stepY) < 1.0) {
-    outVisibility = 1.0;
-    return;
-  }
-  vec4 d = decodeDirections(disc.rg);
-  vec2 start = vec2(pixel) + 0.5;
-  vec2 t = uv * texels;
-  vec2 p = t - floor(t);
-  RvSample s;
-  s.s = 1.0;
-  s.d = d;
-  s.edge = true;
-  s.x = rvAxis(searchScreen(start, -stepX, d), searchScreen(start, stepX, d), p.x);
-  s.y = rvAxis(searchScreen(start, -stepY, d), searchScreen(start, stepY, d), p.y);
-  outVisibility = smsrConservative(s);
+  RvSample s = twoPassSample(pixel, r);
+  outVisibility = s.edge ? smsrConservative(s) : s.s;
 }
