@@ -13,6 +13,7 @@
 // add no leak except RSMSS's opened stripe tips on stacked_occluders.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -101,6 +102,9 @@ TEST_F(RevectorizationScene, AgainstShadowVolumesOnTheBundledScenes) {
       // Conservative SMSR only adds shadow: it cannot leak where sm does not.
       EXPECT_LE(conservative.m.leakPct, sm.m.leakPct);
       EXPECT_LE(twoPass.m.leakPct, sm.m.leakPct);
+      // The same clipping measured in screen space instead of light space.
+      EXPECT_LT(std::abs(twoPass.m.edgeMismatchPct - conservative.m.edgeMismatchPct),
+                0.25 * conservative.m.edgeMismatchPct);
       EXPECT_LE(rpcfSmsr.m.leakPct, sm.m.leakPct);
     }
 }
