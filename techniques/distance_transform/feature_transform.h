@@ -1,0 +1,45 @@
+#pragma once
+// Exact Euclidean feature transform of a screen-space seed mask on the GPU: for every pixel,
+// the integer coordinates of its nearest seed (ties broken either way), or (-1, -1) when
+// the image has no seed. EDTSM (seed 004 §3.3) needs the seed itself, not only the
+// distance, to read that seed's world position from the G-buffer.
+//
+// Separable and linear time (Meijster, Roerdink & Hesselink 2000; Felzenszwalb &
+// Huttenlocher 2012): pass 1 finds, per row, the nearest seed column; pass 2 takes, per
+// column, the lower envelope of the parabolas (y - y')² + dx(y')² over the rows y'. All
+// arithmetic is in int32, so the result is exact, unlike jump flooding.
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "testbed/gl/objects.h"
+
+namespace testbed {
+
+class FeatureTransformPass {
+ public:
+  // Largest side handled: keeps every squared distance and envelope intersection in int32.
+  static constexpr int kMaxExtent = 16384;
+
+  // `seeds`: a float-sampled texture (R8, R32F, ...), a seed where the red channel > 0.5;
+  // only its texels [0, size) are read. Allocates (and books in the current
+  // GpuMemoryLedger) the output and scratch buffers when `size` changes.
+  void run(const Texture& seeds, glm::ivec2 size);
+
+  // RG32I, `size` texels: (x, y) texel coordinates of the nearest seed, or (-1, -1). Valid
+  // after run(); its writes are made visible to texel fetches, image loads and read-backs.
+  const Texture& nearest() const { return nearest_; }
+  glm::ivec2 size() const { return size_; }
+
+  // Reads nearest() back, rows bottom-up (texel (x, y) at index y * width + x).
+  std::vector<glm::ivec2> readNearest() const;
+
+ private:
+  Program rowsProgram_, columnsProgram_;
+  glm::ivec2 size_{0};
+  Texture nearest_;
+  Buffer rowNearest_;  // int per pixel: nearest seed column in the same row, -1 if none
+  Buffer envelope_;    // ivec2 per pixel: pass 2's parabola stack (row, first row it wins)
+};
+
+}  // namespace testbed
