@@ -1,0 +1,159 @@
+#include "techniques/distance_transform/edtsm.h"
+
+#include <cmath>
+
+#include "testbed/render/receiver_inputs.h"
+#include "testbed/technique/registry.h"
+
+namespace testbed::distance_transform {
+
+std::vector<ParameterSpec> EdtShadowMapping::parameters() {
+  // World-unit defaults suit the bundled scenes (objects 10–60 units across).
+  return revectorization::withCommonParameters({
+      ParameterSpec::real("penumbra", 1.0, 0.0, 1e6, "penumbra size P in world units (eq. 8)"),
+      ParameterSpec::real("filter_width", 0.5, 0.0, 1e6,
+                          "mean filter width in world units, projected per pixel (eqs. 9-10); 0: no filter"),
+      ParameterSpec::real("depth_threshold", 2.5e-3, 0.0, 1.0,
+                          "largest camera-depth difference between pixels of one surface (the paper's 2.5e-3)"),
+      ParameterSpec::integer("max_filter_radius", 15, 0, 64, "cap on the mean filter's half width, pixels"),
+  });
+}
+
+void EdtShadowMapping::configure(const ParameterSet& parameters) {
+  shadowMap_.configure(parameters);
+  rbsm_.configure(parameters);
+  penumbra_ = static_cast<float>(parameters.getFloat("penumbra"));
+  filterWidth_ = static_cast<float>(parameters.getFloat("filter_width"));
+  depthThreshold_ = static_cast<float>(parameters.getFloat("depth_threshold"));
+  maxFilterRadius_ = static_cast<int>(parameters.getInt("max_filter_radius"));
+}
+
+void EdtShadowMapping::allocate(glm::ivec2 size) {
+  if (hard_.texture && hard_.texture.width() == size.x && hard_.texture.height() == size.y) return;
+  auto make = [&](GLenum format) {
+    ScreenTexture t{Texture::create2D(format, size.x, size.y), Framebuffer::create()};
+    t.texture.setFilter(GL_NEAREST, GL_NEAREST);
+    t.target.attachColor(0, t.texture);
+    t.target.finish({0});
+    return t;
+  };
+  hard_ = make(GL_R8);
+  seeds_ = make(GL_R8);
+  intensity_ = make(GL_R32F);
+  filtered_ = make(GL_R32F);
+}
+
+void EdtShadowMapping::bindScreenInputs(const Program& program, const FrameInputs& in) const {
+  bindReceiverInputs(program, in);
+  program.set("uCameraViewProjection", in.camera.viewProjection());
+  program.set("uDepthThreshold", depthThreshold_);
+}
+
+void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
+  if (!rbsmProgram_) {
+    const auto program = [](const char* key) { return Program::graphics("testbed/render/fullscreen.vert", key); };
+    rbsmProgram_ = program("techniques/revectorization/smsr.frag");
+    seedsProgram_ = program("techniques/distance_transform/edtsm_seeds.frag");
+    penumbraProgram_ = program("techniques/distance_transform/edtsm_penumbra.frag");
+    filterProgram_ = program("techniques/distance_transform/edtsm_mean_filter.frag");
+  }
+  allocate(in.size);
+  const float zero[4] = {0, 0, 0, 0};
+  shadowMap_.render(in, timer);
+  {
+    auto scope = timer.scope("rbsm");
+    glClearNamedFramebufferfv(hard_.target.id(), GL_COLOR, 0, zero);
+    bindReceiverInputs(rbsmProgram_, in);
+    rbsm_.bindLibrary(rbsmProgram_, shadowMap_.depth());
+    rbsmProgram_.set("uImproved", improved_ ? 1 : 0);
+    screen_.draw(rbsmProgram_, hard_.target, in.size);
+  }
+  glBindTextureUnit(4, hard_.texture.id());
+  {
+    auto scope = timer.scope("seeds");
+    bindScreenInputs(seedsProgram_, in);
+    seedsProgram_.set("uHardVisibility", 4);
+    screen_.draw(seedsProgram_, seeds_.target, in.size);
+  }
+  {
+    auto scope = timer.scope("edt");
+    featureTransform_.run(seeds_.texture, in.size);
+  }
+  {
+    auto scope = timer.scope("penumbra");
+    glClearNamedFramebufferfv(intensity_.target.id(), GL_COLOR, 0, zero);
+    bindScreenInputs(penumbraProgram_, in);
+    glBindTextureUnit(4, hard_.texture.id());
+    glBindTextureUnit(5, featureTransform_.nearest().id());
+    penumbraProgram_.set("uHardVisibility", 4);
+    penumbraProgram_.set("uNearestSeed", 5);
+    penumbraProgram_.set("uPenumbra", penumbra_);
+    screen_.draw(penumbraProgram_, intensity_.target, in.size);
+  }
+  {
+    auto scope = timer.scope("mean-filter");
+    bindScreenInputs(filterProgram_, in);
+    filterProgram_.set("uFilterWidth", filterWidth_);
+    // z_screen = 1 / (2 tan(fov_y / 2)) and projection[1][1] = 1 / tan(fov_y / 2).
+    filterProgram_.set("uScreenDistance", 0.5f * in.camera.projection[1][1]);
+    filterProgram_.set("uCameraPosition", glm::vec3(glm::inverse(in.camera.view)[3]));
+    filterProgram_.set("uMaxRadius", maxFilterRadius_);
+    filterProgram_.set("uIntensity", 4);
+    glClearNamedFramebufferfv(filtered_.target.id(), GL_COLOR, 0, zero);
+    glBindTextureUnit(4, intensity_.texture.id());
+    filterProgram_.set("uDirection", glm::ivec2(1, 0));
+    screen_.draw(filterProgram_, filtered_.target, in.size);
+    glBindTextureUnit(4, filtered_.texture.id());
+    filterProgram_.set("uDirection", glm::ivec2(0, 1));
+    screen_.draw(filterProgram_, out.framebuffer, in.size);
+  }
+  rbsm_.renderDebug(in, shadowMap_.depth(), improved_);  // untimed
+}
+
+namespace {
+
+TechniqueInfo makeInfo(const char* id, const char* citation, const char* summary) {
+  TechniqueInfo i;
+  i.id = id;
+  i.family = "distance_transform";
+  i.output = OutputKind::Filtered;
+  i.citation = citation;
+  i.summary = summary;
+  i.parameters = EdtShadowMapping::parameters();
+  return i;
+}
+
+class Edtsm final : public EdtShadowMapping {
+ public:
+  Edtsm() : EdtShadowMapping(false) {}
+  static const TechniqueInfo& staticInfo() {
+    static const TechniqueInfo info =
+        makeInfo("edtsm", "Macedo, Apolinário, Euclidean distance transform shadow mapping, GI 2017",
+                 "fixed-size penumbra from the exact EDT over conservative RBSM hard shadows");
+    return info;
+  }
+  const TechniqueInfo& info() const override { return staticInfo(); }
+};
+
+class EdtsmStar final : public EdtShadowMapping {
+ public:
+  EdtsmStar() : EdtShadowMapping(true) {}
+  static const TechniqueInfo& staticInfo() {
+    static const TechniqueInfo info = makeInfo(
+        "edtsm-star",
+        "Macedo, Apolinário, Improved anti-aliasing for Euclidean distance transform shadow mapping",
+        "EDTSM over RBSM with the improved visibility function (less overestimation)");
+    return info;
+  }
+  const TechniqueInfo& info() const override { return staticInfo(); }
+};
+
+}  // namespace
+}  // namespace testbed::distance_transform
+
+namespace testbed {
+using distance_transform::Edtsm;
+using distance_transform::EdtsmStar;
+TESTBED_REGISTER_TECHNIQUE(Edtsm);
+TESTBED_REGISTER_TECHNIQUE(EdtsmStar);
+}  // namespace testbed

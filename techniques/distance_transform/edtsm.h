@@ -1,0 +1,51 @@
+#pragma once
+// Euclidean distance transform shadow mapping (Macedo & Apolinário, GI 2017; EDTSM* from
+// their improved anti-aliasing paper, seed 004): fixed-size penumbrae from RBSM's anti-aliased hard shadows. Passes, each timed:
+//   shadow-map   the shared shadow map
+//   rbsm         single-pass SMSR's hard visibility (conservative for edtsm, improved for
+//                edtsm-star) into a screen texture
+//   seeds        receivers with an 8-neighbour on the same surface of the other visibility
+//   edt          the exact screen-space feature transform: each pixel's nearest seed
+//   penumbra     eq. 8 on the world-space distance to that seed
+//   mean-filter  the edge-aware separable mean filter (eqs. 9–10), two draws
+#include "techniques/distance_transform/feature_transform.h"
+#include "techniques/revectorization/revectorization_technique.h"
+#include "testbed/render/screen_pass.h"
+#include "testbed/render/shadow_map_pass.h"
+#include "testbed/technique/technique.h"
+
+namespace testbed::distance_transform {
+
+class EdtShadowMapping : public ShadowTechnique {
+ public:
+  // penumbra, filter_width, depth_threshold, max_filter_radius, then RBSM's parameters.
+  static std::vector<ParameterSpec> parameters();
+
+  void configure(const ParameterSet& parameters) override;
+  void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override;
+  std::vector<std::pair<std::string, ImageF>> debugImages() const override { return rbsm_.debugImages(); }
+
+ protected:
+  explicit EdtShadowMapping(bool improved) : improved_(improved) {}
+
+ private:
+  struct ScreenTexture {
+    Texture texture;
+    Framebuffer target;
+  };
+  void allocate(glm::ivec2 size);
+  // Receivers, camera depth and the edge-awareness threshold of edtsm_screen.glsl.
+  void bindScreenInputs(const Program& program, const FrameInputs& in) const;
+
+  bool improved_;
+  float penumbra_ = 1.0f, filterWidth_ = 0.5f, depthThreshold_ = 2.5e-3f;
+  int maxFilterRadius_ = 15;
+  revectorization::Common rbsm_;
+  ShadowMapPass shadowMap_;
+  ScreenPass screen_;
+  FeatureTransformPass featureTransform_;
+  Program rbsmProgram_, seedsProgram_, penumbraProgram_, filterProgram_;
+  ScreenTexture hard_, seeds_, intensity_, filtered_;
+};
+
+}  // namespace testbed::distance_transform

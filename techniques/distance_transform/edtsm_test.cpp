@@ -1,0 +1,138 @@
+// EDTSM and EDTSM*: the passes and their memory, the plumbing (P = 0 and no filter give
+// RBSM's hard shadow exactly), eq. 8's sides and range, and, against the shadow-volume
+// ground truth, that EDTSM* overestimates less than EDTSM (seed 004's claim) and neither
+// leaks more than sm. Figures are printed for the closing note.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <string>
+
+#include "groundtruth/shadow_volumes.h"
+#include "testbed/app/frame_runner.h"
+#include "testbed/metrics/metrics.h"
+#include "tests/gl_fixture.h"
+
+namespace testbed {
+namespace {
+
+using Assignments = std::map<std::string, std::string>;
+
+class Edtsm : public ::testing::Test {
+ protected:
+  void SetUp() override { test::sharedContext(); }
+  static TechniqueRun run(FrameRunner& runner, const std::string& id, const Assignments& set = {}) {
+    const auto& technique = findTechnique(id);
+    return runner.run(technique, resolveParameters(id, technique.info->parameters, set));
+  }
+  static Scene bundled(const std::string& name) {
+    return loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/" + name + ".json");
+  }
+};
+
+TEST_F(Edtsm, PassesAndMemory) {
+  const Scene scene = bundled("bunny");
+  RenderSettings settings;
+  settings.size = {320, 180};
+  settings.shadowMapSize = 256;
+  FrameRunner runner(scene, settings);
+  const TechniqueRun sm = run(runner, "sm");
+  for (const std::string id : {"edtsm", "edtsm-star"}) {
+    const TechniqueRun r = run(runner, id);
+    EXPECT_EQ(r.times.order,
+              (std::vector<std::string>{"shadow-map", "rbsm", "seeds", "edt", "penumbra", "mean-filter"}));
+    // Two R8 and two R32F screen textures at least, plus the feature transform's own.
+    EXPECT_GT(r.memoryBytes, sm.memoryBytes + 320u * 180u * (1 + 1 + 4 + 4));
+  }
+}
+
+// Without a penumbra and a filter, EDTSM is its RBSM: edtsm = smsr, edtsm-star = smsr
+// improved, pixel for pixel.
+TEST_F(Edtsm, WithoutPenumbraItIsRbsm) {
+  const Scene scene = bundled("fence");
+  RenderSettings settings;
+  settings.size = {320, 180};
+  settings.shadowMapSize = 256;
+  FrameRunner runner(scene, settings);
+  const Assignments hard{{"penumbra", "0"}, {"filter_width", "0"}};
+  const ImageF conservative = run(runner, "smsr").visibility;
+  const ImageF improved = run(runner, "smsr", {{"visibility", "improved"}}).visibility;
+  for (const auto& [id, expected] : {std::pair{"edtsm", &conservative}, std::pair{"edtsm-star", &improved}}) {
+    const ImageF v = run(runner, id, hard).visibility;
+    int differing = 0;
+    for (std::size_t i = 0; i < v.pixels.size(); ++i) {
+      const float a = v.pixels[i], b = expected->pixels[i];
+      differing += !(a == b || (std::isnan(a) && std::isnan(b)));
+    }
+    EXPECT_EQ(differing, 0) << id;
+  }
+}
+
+// Eq. 8 without the filter: RBSM's shadowed pixels get [0, 1/2], its lit ones [1/2, 1];
+// intermediate values exist; a larger P widens the penumbra.
+TEST_F(Edtsm, PenumbraSidesAndWidth) {
+  const Scene scene = bundled("wall");
+  RenderSettings settings;
+  settings.size = {320, 180};
+  settings.shadowMapSize = 256;
+  FrameRunner runner(scene, settings);
+  const ImageF hard = run(runner, "smsr", {{"visibility", "improved"}}).visibility;
+  int previousPenumbra = 0;
+  for (const std::string p : {"0.5", "1", "2"}) {
+    SCOPED_TRACE("P = " + p);
+    const ImageF v = run(runner, "edtsm-star", {{"penumbra", p}, {"filter_width", "0"}}).visibility;
+    int penumbra = 0, wrongSide = 0, outOfRange = 0;
+    for (std::size_t i = 0; i < v.pixels.size(); ++i) {
+      if (std::isnan(hard.pixels[i])) continue;
+      const float x = v.pixels[i];
+      outOfRange += !(x >= 0.0f && x <= 1.0f);
+      wrongSide += hard.pixels[i] < 0.5f ? x > 0.5f : x < 0.5f;
+      penumbra += x > 0.0f && x < 1.0f;
+    }
+    EXPECT_EQ(outOfRange, 0);
+    EXPECT_EQ(wrongSide, 0);
+    EXPECT_GT(penumbra, previousPenumbra);
+    previousPenumbra = penumbra;
+  }
+}
+
+// Against the ground truth: EDTSM* is built on the improved RBSM, so next to the boundary
+// it overestimates less than EDTSM (seed 004's claim); neither adds leaks to sm's. Edge
+// mismatch is printed, not ordered: seeds on both sides of the hard edge take exactly 1/2,
+// and where the filtered ramp crosses 0.5 inside that plateau is a coin toss (on
+// dragon_sun EDTSM* comes out behind).
+TEST_F(Edtsm, ImprovedOverestimatesLessAgainstShadowVolumes) {
+  std::cout << "scene      map   technique     edge%  bnd_mean   leak%  over@0.5px   rmse\n";
+  for (const std::string name : {"bunny", "wall", "fence", "dragon_sun"})
+    for (const int mapSize : {256, 512}) {
+      SCOPED_TRACE(name + " " + std::to_string(mapSize));
+      RenderSettings settings;
+      settings.size = {640, 360};
+      settings.shadowMapSize = mapSize;
+      const Scene scene = bundled(name);
+      FrameRunner runner(scene, settings);
+      const ImageF truth =
+          runner
+              .run(shadowVolumeGroundTruth(),
+                   resolveParameters("groundtruth", shadowVolumeGroundTruth().info->parameters, {}))
+              .visibility;
+      std::map<std::string, std::pair<ErrorMetrics, double>> m;
+      for (const std::string id : {"sm", "edtsm", "edtsm-star"}) {
+        const ImageF v = run(runner, id).visibility;
+        const ErrorMetrics e = computeErrorMetrics(v, truth);
+        const double near = computeErrorMetrics(v, truth, nullptr, {.marginPx = 0.5}).overestimationPct;
+        m[id] = {e, near};
+        std::printf("%-10s %4d  %-12s %6.2f %9.3f %7.3f %11.3f %8.4f\n", name.c_str(), mapSize, id.c_str(),
+                    e.edgeMismatchPct, e.boundaryMean, e.leakPct, near, e.rmse);
+      }
+      std::fflush(stdout);
+      EXPECT_LT(m["edtsm-star"].second, m["edtsm"].second);
+      EXPECT_LE(m["edtsm"].first.leakPct, m["sm"].first.leakPct);
+      EXPECT_LE(m["edtsm-star"].first.leakPct, m["sm"].first.leakPct);
+    }
+}
+
+}  // namespace
+}  // namespace testbed
