@@ -3,7 +3,7 @@
 // window is the user's world-space width seen at the receiver's distance (eqs. 9–10:
 // w_screen = w · z_screen / z_eye with z_screen = 1 / (2 tan(fov_y / 2)), a fraction of the
 // screen height), so the blur keeps its world size as the camera moves; only neighbours on
-// the same surface take part.
+// the same surface and facing the light take part.
 #include "techniques/distance_transform/edtsm_screen.glsl"
 
 uniform sampler2D uIntensity;
@@ -19,6 +19,10 @@ void main() {
   vec3 position;
   float depth;
   if (!receiverDepth(pixel, position, depth)) discard;
+  if (!litByFacing(pixel)) {  // shadowed by the facing rule, as in every technique
+    outIntensity = 0.0;
+    return;
+  }
   float heightPx = float(textureSize(uGPosition, 0).y);
   float widthPx = uFilterWidth * uScreenDistance / distance(position, uCameraPosition) * heightPx;
   int radius = min(int(floor(0.5 * widthPx)), uMaxRadius);
@@ -28,7 +32,7 @@ void main() {
     ivec2 q = pixel + i * uDirection;
     vec3 qPosition;
     float qDepth;
-    if (!receiverDepth(q, qPosition, qDepth) || !sameSurface(depth, qDepth)) continue;
+    if (!receiverDepth(q, qPosition, qDepth) || !sameSurface(depth, qDepth) || !litByFacing(q)) continue;
     sum += texelFetch(uIntensity, q, 0).r;
     count += 1.0;
   }

@@ -21,7 +21,7 @@ void main() {
   ivec2 seed = texelFetch(uNearestSeed, pixel, 0).xy;
   vec3 seedPosition;
   float seedDepth;
-  if (uPenumbra <= 0.0 || seed.x < 0 || !receiverDepth(seed, seedPosition, seedDepth) || !sameSurface(depth, seedDepth)) return;
+  if (uPenumbra <= 0.0 || !litByFacing(pixel) || seed.x < 0 || !receiverDepth(seed, seedPosition, seedDepth) || !sameSurface(depth, seedDepth)) return;
   float d = distance(position, seedPosition);
   if (d <= 0.5 * uPenumbra) outIntensity = v < 0.5 ? 0.5 - d / uPenumbra : 0.5 + d / uPenumbra;
 }

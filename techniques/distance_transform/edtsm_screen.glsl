@@ -22,3 +22,11 @@ bool receiverDepth(ivec2 pixel, out vec3 position, out float depth) {
 }
 
 bool sameSurface(float depthA, float depthB) { return abs(depthA - depthB) < uDepthThreshold; }
+
+// Receivers facing away from the light are shadowed by the facing rule, not by an
+// occluder: they make no seeds, take no penumbra and stay out of the mean filter, so the
+// terminator is not softened (seed 004 keeps penumbrae apart from self-shadowing).
+bool litByFacing(ivec2 pixel) {
+  Receiver r;
+  return loadReceiver(pixel, r) && !facesAwayFromLight(r);
+}
