@@ -6,7 +6,8 @@
 //
 // Own flags (before or after Google Benchmark's): --scenes=DIR (default: the bundled
 // scenes/), --shadow-maps=512,1024 (default 1024), --size=WxH (default 1280x720),
-// --backend=osmesa|egl. Counters: memory_bytes, cpu_ms, and one "<pass>_ms" per pass.
+// --backend=osmesa|egl, --plugin=PATH (repeatable: techniques from a plugin library,
+// testbed/technique/plugin.h). Counters: memory_bytes, cpu_ms, and one "<pass>_ms" per pass.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include <sstream>
 
 #include "testbed/app/frame_runner.h"
+#include "testbed/app/plugins.h"
 #include "testbed/core/error.h"
 #include "testbed/gl/context.h"
 
@@ -28,6 +30,7 @@ struct Options {
   std::vector<int> shadowMaps = {1024};
   std::string size = "1280x720";
   std::string backend = "osmesa";
+  std::vector<std::string> plugins;
 };
 
 // Takes our flags out of argv so Google Benchmark does not reject them.
@@ -49,6 +52,8 @@ Options takeOwnFlags(int& argc, char** argv) {
       options.size = v;
     } else if (const char* v = value("--backend=")) {
       options.backend = v;
+    } else if (const char* v = value("--plugin=")) {
+      options.plugins.push_back(v);
     } else {
       argv[kept++] = argv[i];
     }
@@ -104,6 +109,7 @@ int main(int argc, char** argv) {
     const Options options = takeOwnFlags(argc, argv);
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+    testbed::loadPlugins(options.plugins);  // before the registry is read below
 
     g_fixture.context = testbed::createContext(options.backend);
     std::vector<std::filesystem::path> files;

@@ -1,8 +1,13 @@
-# Build helpers shared by the core, the techniques, the tests and the benchmarks.
+# Build helpers shared by the core, the techniques, the tests and the benchmarks, and
+# included by plugin projects (TestbedPluginConfig.cmake in the build tree).
+
+# This folder, for EmbedShader.cmake: a plugin project's CMAKE_SOURCE_DIR is its own.
+set(TESTBED_CMAKE_DIR "${CMAKE_CURRENT_LIST_DIR}")
 
 # testbed_embed_shaders(<target> FILES a.frag b.glsl ...)
 # Embeds GLSL sources into <target> at build time. Each file is registered under its path
-# relative to the repository root, which is also the name `#include "..."` uses.
+# relative to the repository root (a plugin's: its project root), which is also the name
+# `#include "..."` uses.
 function(testbed_embed_shaders target)
   cmake_parse_arguments(ARG "" "" "FILES" ${ARGN})
   set(outputs "")
@@ -14,8 +19,8 @@ function(testbed_embed_shaders target)
     add_custom_command(
       OUTPUT "${out}"
       COMMAND ${CMAKE_COMMAND} -DINPUT=${abs} -DOUTPUT=${out} -DKEY=${key} -DIDENT=${ident}
-              -P "${CMAKE_SOURCE_DIR}/cmake/EmbedShader.cmake"
-      DEPENDS "${abs}" "${CMAKE_SOURCE_DIR}/cmake/EmbedShader.cmake"
+              -P "${TESTBED_CMAKE_DIR}/EmbedShader.cmake"
+      DEPENDS "${abs}" "${TESTBED_CMAKE_DIR}/EmbedShader.cmake"
       COMMENT "Embedding ${key}")
     list(APPEND outputs "${out}")
   endforeach()
@@ -41,4 +46,19 @@ endfunction()
 function(testbed_link_techniques exe)
   get_property(targets GLOBAL PROPERTY TESTBED_TECHNIQUE_TARGETS)
   target_link_libraries(${exe} PRIVATE testbed_core testbed_groundtruth ${targets})
+endfunction()
+
+# testbed_add_plugin(<name> SOURCES ... [SHADERS ...])
+# An out-of-tree technique library lib<name>.so for `testbed ... --plugin` (see
+# testbed/technique/plugin.h). It compiles against testbed::plugin_api (headers and
+# definitions only) and leaves the core's symbols undefined: they bind to the `testbed`
+# executable at load time. Shader keys are paths relative to CMAKE_SOURCE_DIR; a key the
+# testbed already has keeps the testbed's text, so keep shaders in a folder of your own.
+function(testbed_add_plugin name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;SHADERS" ${ARGN})
+  add_library(${name} MODULE ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE testbed::plugin_api)
+  if(ARG_SHADERS)
+    testbed_embed_shaders(${name} FILES ${ARG_SHADERS})
+  endif()
 endfunction()

@@ -6,6 +6,7 @@
 
 #include "groundtruth/shadow_volumes.h"
 #include "testbed/app/commands.h"
+#include "testbed/app/plugins.h"
 #include "testbed/core/error.h"
 #include "testbed/gl/context.h"
 #include "testbed/metrics/metrics.h"
@@ -73,6 +74,7 @@ CommandRunner addCompareCommand(CLI::App& app) {
   return [command, options]() {
     if (!command->parsed()) return -1;
     const RenderSettings settings = options->common.settings();
+    loadPlugins(options->common.plugins);
     const auto techniques = chooseTechniques(options->techniques);
     const auto assignments = routeAssignments(options->assignments);
     std::vector<ParameterSet> parameters;

@@ -8,6 +8,7 @@
 #include "groundtruth/raycast.h"
 #include "groundtruth/shadow_volumes.h"
 #include "testbed/app/commands.h"
+#include "testbed/app/plugins.h"
 #include "testbed/core/error.h"
 #include "testbed/gl/context.h"
 
@@ -30,6 +31,7 @@ CommandRunner addGroundTruthCommand(CLI::App& app) {
   return [command, options]() {
     if (!command->parsed()) return -1;
     const RenderSettings settings = options->common.settings();
+    loadPlugins(options->common.plugins);  // accepted like the other commands: one flag set for scripts
     if (options->method != "volumes" && options->method != "raycast")
       throw InputError("--method: unknown method '" + options->method + "' (available: volumes, raycast)");
     if (options->areaSamples < 0 || options->areaSamples > 4096)

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "testbed/app/commands.h"
+#include "testbed/app/plugins.h"
 
 namespace testbed {
 namespace {
@@ -28,8 +29,11 @@ CommandRunner addListCommand(CLI::App& app) {
   auto markdown = std::make_shared<bool>(false);
   command->add_flag("--json", *json, "print JSON");
   command->add_flag("--markdown", *markdown, "print the README's technique table");
-  return [command, json, markdown]() {
+  auto plugins = std::make_shared<std::vector<std::string>>();
+  addPluginOption(*command, *plugins);
+  return [command, json, markdown, plugins]() {
     if (!command->parsed()) return -1;
+    loadPlugins(*plugins);
     const auto techniques = registeredTechniques();
     if (*markdown) {
       std::cout << techniqueTableMarkdown();

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "testbed/app/commands.h"
+#include "testbed/app/plugins.h"
 #include "testbed/gl/context.h"
 
 namespace testbed {
@@ -27,6 +28,7 @@ CommandRunner addRenderCommand(CLI::App& app) {
     if (!command->parsed()) return -1;
     // Everything the user typed is checked before any GL work or any file is written.
     const RenderSettings settings = options->common.settings();
+    loadPlugins(options->common.plugins);
     const RegisteredTechnique& technique = findTechnique(options->technique);
     const ParameterSet parameters =
         resolveParameters(technique.info->id, technique.info->parameters, parseAssignments(options->assignments));

@@ -22,11 +22,15 @@ struct CommonOptions {
   std::string backend = "osmesa";
   int repeat = 1;
   std::string out;
+  std::vector<std::string> plugins;  // --plugin, loaded before any technique lookup
 
   void addTo(CLI::App& command);
   // Parses the text options; throws InputError naming the option.
   RenderSettings settings() const;
 };
+
+// --plugin PATH (repeatable): technique libraries, see testbed/app/plugins.h.
+void addPluginOption(CLI::App& command, std::vector<std::string>& paths);
 
 // "1280x720" → {1280, 720}; throws InputError("--size: ...").
 glm::ivec2 parseSize(const std::string& text);

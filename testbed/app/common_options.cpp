@@ -13,6 +13,13 @@ void CommonOptions::addTo(CLI::App& command) {
   command.add_option("--backend", backend, "GL context: osmesa or egl")->capture_default_str();
   command.add_option("--repeat", repeat, "timed frames after one warm-up frame (medians)")->capture_default_str();
   command.add_option("--out", out, "output folder")->required();
+  addPluginOption(command, plugins);
+}
+
+void addPluginOption(CLI::App& command, std::vector<std::string>& paths) {
+  command.add_option("--plugin", paths, "load techniques from a plugin library (repeatable)")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 }
 
 glm::ivec2 parseSize(const std::string& text) {

@@ -14,13 +14,35 @@ std::map<std::string, RegisteredTechnique, std::less<>>& registry() {
   return techniques;
 }
 
+std::vector<RegisteredTechnique>*& captureTarget() {
+  static std::vector<RegisteredTechnique>* target = nullptr;
+  return target;
+}
+
 }  // namespace
 
 TechniqueRegistration::TechniqueRegistration(const TechniqueInfo& info, TechniqueFactory factory) {
-  // Two plugins with one id would make every result ambiguous: fail loudly at start-up.
-  if (!registry().emplace(info.id, RegisteredTechnique{&info, std::move(factory)}).second)
-    throw std::logic_error("technique id registered twice: " + info.id);
+  if (auto* capture = captureTarget()) {
+    capture->push_back(RegisteredTechnique{&info, std::move(factory)});
+    return;
+  }
+  addTechnique(RegisteredTechnique{&info, std::move(factory)});
 }
+
+bool isTechniqueRegistered(std::string_view id) { return registry().find(id) != registry().end(); }
+
+void addTechnique(RegisteredTechnique technique) {
+  // Two techniques with one id would make every result ambiguous: fail loudly at start-up.
+  const std::string id = technique.info->id;
+  if (!registry().emplace(id, std::move(technique)).second)
+    throw std::logic_error("technique id registered twice: " + id);
+}
+
+StaticRegistrationCapture::StaticRegistrationCapture(std::vector<RegisteredTechnique>& into)
+    : previous_(captureTarget()) {
+  captureTarget() = &into;
+}
+StaticRegistrationCapture::~StaticRegistrationCapture() { captureTarget() = previous_; }
 
 std::vector<RegisteredTechnique> registeredTechniques() {
   std::vector<RegisteredTechnique> all;

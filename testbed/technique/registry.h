@@ -28,6 +28,26 @@ struct TechniqueRegistration {
   TechniqueRegistration(const TechniqueInfo& info, TechniqueFactory factory);
 };
 
+// For the plugin loader (testbed/app/plugins.cpp), which validates a plugin's techniques
+// before adding them, so that a bad plugin is an input error rather than a crash.
+bool isTechniqueRegistered(std::string_view id);
+// Throws std::logic_error when the id is taken (callers check first).
+void addTechnique(RegisteredTechnique technique);
+
+// While alive, TechniqueRegistration objects (the static initializers of a plugin being
+// dlopen'ed that used TESTBED_REGISTER_TECHNIQUE) land in `into` instead of the registry,
+// so the loader can check them like the ones its registration function adds.
+class StaticRegistrationCapture {
+ public:
+  explicit StaticRegistrationCapture(std::vector<RegisteredTechnique>& into);
+  ~StaticRegistrationCapture();
+  StaticRegistrationCapture(const StaticRegistrationCapture&) = delete;
+  StaticRegistrationCapture& operator=(const StaticRegistrationCapture&) = delete;
+
+ private:
+  std::vector<RegisteredTechnique>* previous_;
+};
+
 }  // namespace testbed
 
 #define TESTBED_REGISTER_TECHNIQUE(Class)                                              \

@@ -1,0 +1,147 @@
+#include "testbed/app/plugins.h"
+
+#include <dlfcn.h>
+
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <variant>
+
+#include "testbed/core/error.h"
+#include "testbed/technique/plugin.h"
+
+namespace testbed {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Ids whose output files would collide with compare's own (groundtruth.png, grid.png,
+// metrics.json) or that mean something else on the command line (--techniques all).
+const std::set<std::string, std::less<>> kReservedIds = {"all",         "area",    "grid",
+                                                         "groundtruth", "metrics", "raycast"};
+
+// Ids and parameter names become file names and `--set T.name=v` words: keep them plain.
+bool plainName(const std::string& name, bool allowDash) {
+  if (name.empty()) return false;
+  for (char c : name)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || (allowDash && c == '-'))) return false;
+  return true;
+}
+
+std::size_t valueIndexFor(ParameterType type) {
+  switch (type) {
+    case ParameterType::Bool: return 0;
+    case ParameterType::Int: return 1;
+    case ParameterType::Float: return 2;
+    case ParameterType::Choice: return 3;
+  }
+  return std::variant_npos;
+}
+
+// The checks in-tree specs pass by construction (ParameterSpec::real etc.); a plugin may
+// have filled the struct by hand. Returns what is wrong, empty when nothing is.
+std::string specProblem(const ParameterSpec& spec) {
+  if (!plainName(spec.name, false)) return "name must be letters, digits and '_'";
+  if (spec.defaultValue.index() != valueIndexFor(spec.type))
+    return "default is not a " + std::string(typeName(spec.type));
+  if (spec.type == ParameterType::Int || spec.type == ParameterType::Float) {
+    const double value = spec.type == ParameterType::Int ? double(std::get<std::int64_t>(spec.defaultValue))
+                                                         : std::get<double>(spec.defaultValue);
+    if (!std::isfinite(spec.min) || !std::isfinite(spec.max) || spec.min > spec.max)
+      return "range [" + formatValue(spec.min) + ", " + formatValue(spec.max) + "] is empty or not finite";
+    if (!std::isfinite(value) || value < spec.min || value > spec.max)
+      return "default " + formatValue(spec.defaultValue) + " is outside [" + formatValue(spec.min) + ", " +
+             formatValue(spec.max) + "]";
+    if (spec.oddOnly && (spec.type != ParameterType::Int || std::get<std::int64_t>(spec.defaultValue) % 2 == 0))
+      return "odd_only needs an odd integer default";
+  }
+  if (spec.type == ParameterType::Choice) {
+    const auto& value = std::get<std::string>(spec.defaultValue);
+    bool listed = false;
+    for (const auto& choice : spec.choices) listed = listed || choice == value;
+    if (!listed) return "default '" + value + "' is not among its choices";
+  }
+  return "";
+}
+
+void checkTechnique(const TechniqueInfo& info, const std::set<std::string>& earlier, const std::string& where) {
+  if (!plainName(info.id, true))
+    throw InputError(where + ": technique id '" + info.id + "' must be letters, digits, '-' and '_'");
+  const std::string technique = where + ": technique '" + info.id + "'";
+  if (kReservedIds.count(info.id)) throw InputError(technique + ": the id is reserved by the testbed");
+  if (isTechniqueRegistered(info.id) || earlier.count(info.id))
+    throw InputError(technique + ": the id is already registered");
+  std::set<std::string> names;
+  for (const auto& spec : info.parameters) {
+    if (!names.insert(spec.name).second)
+      throw InputError(technique + ": parameter '" + spec.name + "' is declared twice");
+    const std::string problem = specProblem(spec);
+    if (!problem.empty()) throw InputError(technique + ": parameter '" + spec.name + "': " + problem);
+  }
+}
+
+// dlerror() starts with the file name; the caller names the path already.
+std::string loaderMessage(const std::string& file) {
+  const char* error = dlerror();
+  std::string text = error ? error : "unknown dlopen error";
+  if (text.rfind(file + ": ", 0) == 0) text.erase(0, file.size() + 2);
+  return text;
+}
+
+void loadPlugin(const std::string& path, std::set<void*>& loaded) {
+  const std::string where = "--plugin " + path;
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(where + ": no such file");
+  if (!fs::is_regular_file(path, ec)) throw InputError(where + ": not a file");
+  // A name without '/' would make dlopen search the library path instead of this file.
+  const std::string file = fs::absolute(path).lexically_normal().string();
+
+  std::vector<RegisteredTechnique> techniques;
+  void* handle = nullptr;
+  {
+    StaticRegistrationCapture capture(techniques);  // TESTBED_REGISTER_TECHNIQUE in the plugin
+    dlerror();
+    // RTLD_NOW: a plugin built against another testbed fails here on an unresolved symbol
+    // instead of later, mid-frame. The library stays loaded for the process's lifetime:
+    // the registry keeps pointers to its TechniqueInfo and its factories.
+    handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+  }
+  if (!handle) throw InputError(where + ": cannot load it as a shared library: " + loaderMessage(file));
+  if (!loaded.insert(handle).second) return;  // the same file twice (another path, a link)
+
+  auto* version = reinterpret_cast<testbed_plugin_api_version_fn*>(dlsym(handle, "testbed_plugin_api_version"));
+  auto* entry = reinterpret_cast<testbed_register_plugin_fn*>(dlsym(handle, "testbed_register_plugin"));
+  if (!entry || !version)
+    throw InputError(where + ": not a testbed plugin: it exports no " +
+                     (entry ? "testbed_plugin_api_version" : "testbed_register_plugin") +
+                     " function (define both with TESTBED_PLUGIN from testbed/technique/plugin.h)");
+  if (const int v = version(); v != TESTBED_PLUGIN_API_VERSION)
+    throw InputError(where + ": built for plugin API version " + std::to_string(v) + ", this testbed loads version " +
+                     std::to_string(TESTBED_PLUGIN_API_VERSION) + ": rebuild it against this testbed");
+
+  PluginRegistrar registrar;
+  try {
+    entry(registrar);
+  } catch (const std::exception& error) {
+    throw InputError(where + ": its registration function failed: " + error.what());
+  }
+  techniques.insert(techniques.end(), registrar.added().begin(), registrar.added().end());
+  if (techniques.empty()) throw InputError(where + ": registers no technique");
+
+  std::set<std::string> ids;
+  for (const auto& t : techniques) {
+    checkTechnique(*t.info, ids, where);
+    ids.insert(t.info->id);
+  }
+  for (auto& t : techniques) addTechnique(std::move(t));
+}
+
+}  // namespace
+
+void loadPlugins(const std::vector<std::string>& paths) {
+  static std::set<void*> loaded;
+  for (const auto& path : paths) loadPlugin(path, loaded);
+}
+
+}  // namespace testbed

@@ -1,0 +1,58 @@
+#pragma once
+// Out-of-tree techniques: a shared library loaded with `testbed ... --plugin PATH`.
+// It registers its techniques through the same interface as the in-tree ones:
+//
+//   #include "testbed/technique/plugin.h"
+//   class MyTechnique : public testbed::ShadowTechnique { ... static const TechniqueInfo& staticInfo(); };
+//   TESTBED_PLUGIN(registrar) { registrar.add<MyTechnique>(); }
+//
+// The plugin is built against the testbed's headers only (cmake: testbed_add_plugin) and
+// links none of its objects: its undefined symbols (the registry, GL objects, the shader
+// library, the glad function pointers, ShadowMapScreenTechnique, ...) bind at dlopen time
+// to the ones the `testbed` executable exports (it is linked with ENABLE_EXPORTS), so
+// there is one registry and one GL loader in the process. Its embedded shaders
+// (testbed_add_plugin SHADERS) register with the executable's shader library when the
+// library is loaded, keyed by their path relative to the plugin project's root.
+#include <utility>
+#include <vector>
+
+#include "testbed/technique/registry.h"
+
+// Bumped whenever a change to technique.h, registry.h or the core classes a plugin may
+// derive from breaks plugins built against an older testbed: the loader refuses a plugin
+// built for another version instead of crashing in it.
+#define TESTBED_PLUGIN_API_VERSION 1
+
+namespace testbed {
+
+// Collects what a plugin's registration function adds; the loader checks every entry
+// (id free and well-formed, parameter specs consistent) before any reaches the registry.
+class PluginRegistrar {
+ public:
+  // `info` must live as long as the process (a function-local static, as in-tree).
+  void add(const TechniqueInfo& info, TechniqueFactory factory) {
+    added_.push_back(RegisteredTechnique{&info, std::move(factory)});
+  }
+  // For a class with `static const TechniqueInfo& staticInfo()`, like TESTBED_REGISTER_TECHNIQUE.
+  template <class Technique>
+  void add() {
+    add(Technique::staticInfo(), [] { return std::unique_ptr<ShadowTechnique>(new Technique()); });
+  }
+  const std::vector<RegisteredTechnique>& added() const { return added_; }
+
+ private:
+  std::vector<RegisteredTechnique> added_;
+};
+
+}  // namespace testbed
+
+// The two C symbols the loader looks up (C names: no mangling to agree on).
+#define TESTBED_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))
+using testbed_plugin_api_version_fn = int();
+using testbed_register_plugin_fn = void(testbed::PluginRegistrar&);
+
+// Defines both entry points; the body that follows registers the techniques:
+//   TESTBED_PLUGIN(registrar) { registrar.add<A>(); registrar.add<B>(); }
+#define TESTBED_PLUGIN(registrar)                                                         \
+  TESTBED_PLUGIN_EXPORT int testbed_plugin_api_version() { return TESTBED_PLUGIN_API_VERSION; } \
+  TESTBED_PLUGIN_EXPORT void testbed_register_plugin(::testbed::PluginRegistrar& registrar)

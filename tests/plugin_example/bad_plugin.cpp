@@ -1,0 +1,42 @@
+// Broken plugins for tests/plugin_test.cpp, one per BAD_* definition: each must be turned
+// away by the loader with exit code 2 and a line naming the library.
+#include "testbed/technique/plugin.h"
+
+namespace {
+
+using namespace testbed;
+
+// Never rendered: the loader rejects it before any frame.
+class Dummy final : public ShadowTechnique {
+ public:
+  static const TechniqueInfo& staticInfo() {
+    static const TechniqueInfo info = [] {
+      TechniqueInfo i;
+#if defined(BAD_DUPLICATE_ID)
+      i.id = "sm";  // taken by the in-tree technique
+#else
+      i.id = "bad-plugin";
+#endif
+#if defined(BAD_PARAMETER_SPEC)
+      i.parameters = {ParameterSpec::integer("kernel", 4, 1, 3, "default outside its own range")};
+#endif
+      return i;
+    }();
+    return info;
+  }
+  const TechniqueInfo& info() const override { return staticInfo(); }
+  void configure(const ParameterSet&) override {}
+  void render(const FrameInputs&, PassTimer&, const VisibilityTarget&) override {}
+};
+
+}  // namespace
+
+#if defined(BAD_NO_ENTRY)
+// A shared library, but no testbed_register_plugin.
+extern "C" int bad_plugin_something_else() { return 0; }
+#elif defined(BAD_API_VERSION)
+TESTBED_PLUGIN_EXPORT int testbed_plugin_api_version() { return TESTBED_PLUGIN_API_VERSION + 100; }
+TESTBED_PLUGIN_EXPORT void testbed_register_plugin(PluginRegistrar& registrar) { registrar.add<Dummy>(); }
+#else
+TESTBED_PLUGIN(registrar) { registrar.add<Dummy>(); }
+#endif

@@ -1,0 +1,223 @@
+// Out-of-tree technique plugins (`--plugin PATH`, testbed/technique/plugin.h), end to end
+// through the real binary as users load them. The fixtures are built from
+// tests/plugin_example/: `example-sm` (a copy of sm with its own embedded shader) and one
+// broken library per fault the loader must turn away with exit code 2.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "testbed/io/image_io.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+class TempDir {
+ public:
+  TempDir() {
+    std::string pattern = (fs::temp_directory_path() / "testbed-plugin-XXXXXX").string();
+    path_ = ::mkdtemp(pattern.data()) ? fs::path(pattern) : fs::path();
+  }
+  ~TempDir() {
+    std::error_code ignored;
+    if (!path_.empty()) fs::remove_all(path_, ignored);
+  }
+  fs::path operator/(const std::string& name) const { return path_ / name; }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+std::string readFile(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string quote(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+struct RunResult {
+  int exitCode = -1;
+  std::string out, err, command;
+  std::string describe() const { return command + "\n  exit " + std::to_string(exitCode) + "\n  stderr: " + err; }
+};
+
+RunResult runTestbed(const std::vector<std::string>& args) {
+  TempDir tmp;
+  RunResult run;
+  run.command = "timeout -k 5 120 " + quote(TESTBED_BINARY);
+  for (const auto& arg : args) run.command += " " + quote(arg);
+  FILE* pipe = ::popen((run.command + " 2>" + quote((tmp / "stderr").string())).c_str(), "r");
+  if (!pipe) return run;
+  char buffer[4096];
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) run.out.append(buffer, n);
+  const int status = ::pclose(pipe);
+  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.err = readFile(tmp / "stderr");
+  return run;
+}
+
+const std::string kScene = std::string(TESTBED_SOURCE_DIR) + "/scenes/wall.json";
+const std::vector<std::string> kSmall = {"--size", "160x90", "--shadow-map", "256"};
+
+std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
+  args.insert(args.end(), more.begin(), more.end());
+  return args;
+}
+
+// ---------------------------------------------------------------------------------------
+// A working plugin
+
+TEST(Plugin, ListShowsThePluginsTechniqueBesideTheInTreeOnes) {
+  const RunResult run = runTestbed({"list", "--json", "--plugin", TESTBED_PLUGIN_EXAMPLE});
+  ASSERT_EQ(run.exitCode, 0) << run.describe();
+  const json all = json::parse(run.out);
+  bool sm = false, example = false;
+  for (const auto& t : all) {
+    sm = sm || t["id"] == "sm";
+    if (t["id"] == "example-sm") {
+      example = true;
+      EXPECT_EQ(t["family"], "plugin_example");
+      EXPECT_EQ(t["parameters"].size(), 3u) << t.dump(2);
+    }
+  }
+  EXPECT_TRUE(sm && example) << run.out;
+  // Without --plugin it is not there.
+  EXPECT_EQ(runTestbed({"list"}).out.find("example-sm"), std::string::npos);
+}
+
+// example-sm is sm's shader in a plugin: same visibility, pixel for pixel, and its own
+// parameters accepted through --set like an in-tree technique's.
+TEST(Plugin, RenderGivesSmsVisibility) {
+  TempDir tmp;
+  const RunResult sm =
+      runTestbed(with({"render", "--scene", kScene, "--technique", "sm", "--out", (tmp / "sm").string()}, kSmall));
+  ASSERT_EQ(sm.exitCode, 0) << sm.describe();
+  const RunResult example =
+      runTestbed(with({"render", "--plugin", TESTBED_PLUGIN_EXAMPLE, "--scene", kScene, "--technique", "example-sm",
+                       "--set", "bias=0", "--out", (tmp / "example").string()},
+                      kSmall));
+  ASSERT_EQ(example.exitCode, 0) << example.describe();
+  const json record = json::parse(readFile(tmp / "example" / "example-sm.json"));
+  EXPECT_EQ(record["technique"], "example-sm");
+  EXPECT_TRUE(record["gpu_ms"]["passes"].contains("visibility")) << record.dump(2);
+
+  const testbed::ImageF a = testbed::readImage(tmp / "sm" / "sm.exr");
+  const testbed::ImageF b = testbed::readImage(tmp / "example" / "example-sm.exr");
+  ASSERT_EQ(a.pixels.size(), b.pixels.size());
+  int differing = 0, shadowed = 0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+    const bool same = (std::isnan(a.pixels[i]) && std::isnan(b.pixels[i])) || a.pixels[i] == b.pixels[i];
+    differing += !same;
+    shadowed += a.pixels[i] < 0.5f;
+  }
+  EXPECT_EQ(differing, 0);
+  EXPECT_GT(shadowed, 0) << "the scene should have shadows to compare";
+}
+
+TEST(Plugin, CompareRanksItBesideSm) {
+  TempDir tmp;
+  const RunResult run = runTestbed(with({"compare", "--plugin", TESTBED_PLUGIN_EXAMPLE, "--scene", kScene,
+                                         "--techniques", "sm,example-sm", "--out", tmp.path().string()},
+                                        kSmall));
+  ASSERT_EQ(run.exitCode, 0) << run.describe();
+  const json all = json::parse(readFile(tmp / "metrics.json"));
+  const json* sm = nullptr;
+  const json* example = nullptr;
+  for (const auto& record : all) {
+    if (record["technique"] == "sm") sm = &record;
+    if (record["technique"] == "example-sm") example = &record;
+  }
+  ASSERT_TRUE(sm && example) << all.dump(2);
+  EXPECT_EQ((*example)["error"], (*sm)["error"]);
+  EXPECT_NE(readFile(tmp / "report.md").find("example-sm"), std::string::npos);
+  EXPECT_TRUE(fs::exists(tmp / "example-sm.exr"));
+}
+
+// ---------------------------------------------------------------------------------------
+// Bad plugins: exit 2, one line naming the path (and the id), no output written.
+
+// `render` is the command that would write files; the loading path is the same for all.
+void expectRejected(const std::string& plugin, const std::string& expected,
+                    const std::vector<std::string>& command = {"render", "--technique", "sm"}) {
+  TempDir tmp;
+  const fs::path out = tmp / "out";
+  std::vector<std::string> args = with(command, {"--plugin", plugin});
+  if (command[0] != "list") args = with(args, with({"--scene", kScene, "--out", out.string()}, kSmall));
+  const RunResult run = runTestbed(args);
+  EXPECT_EQ(run.exitCode, 2) << run.describe();
+  EXPECT_TRUE(run.out.empty()) << run.out;
+  EXPECT_EQ(run.err.rfind("testbed: --plugin " + plugin + ": ", 0), 0u) << run.err;
+  EXPECT_NE(run.err.find(expected), std::string::npos) << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << "one line: " << run.err;
+  EXPECT_FALSE(fs::exists(out)) << "nothing written by " << run.command;
+}
+
+// Every command that takes --plugin loads it before doing anything else.
+TEST(Plugin, MissingFileIsRejectedByEveryCommand) {
+  TempDir tmp;
+  const std::string missing = (tmp / "nowhere.so").string();
+  const std::vector<std::vector<std::string>> commands = {
+      {"list"}, {"render", "--technique", "sm"}, {"compare", "--techniques", "sm"}, {"groundtruth"}};
+  for (const auto& command : commands) {
+    SCOPED_TRACE(command[0]);
+    expectRejected(missing, "no such file", command);
+  }
+}
+
+TEST(Plugin, FileThatIsNotASharedLibraryIsRejected) {
+  TempDir tmp;
+  const fs::path fake = tmp / "fake.so";
+  std::ofstream(fake) << "not an ELF file\n";
+  expectRejected(fake.string(), "cannot load it as a shared library");
+}
+
+TEST(Plugin, LibraryWithoutRegistrationFunctionIsRejected) {
+  expectRejected(TESTBED_PLUGIN_BAD_NO_ENTRY, "exports no testbed_register_plugin");
+}
+
+TEST(Plugin, IdOfAnInTreeTechniqueIsRejected) {
+  expectRejected(TESTBED_PLUGIN_BAD_DUPLICATE_ID, "technique 'sm': the id is already registered");
+}
+
+// The same id from two libraries (a copy of the example under another name).
+TEST(Plugin, IdRegisteredByAnEarlierPluginIsRejected) {
+  TempDir tmp;
+  const fs::path copy = tmp / "copy.so";
+  fs::copy_file(TESTBED_PLUGIN_EXAMPLE, copy);
+  const RunResult run = runTestbed({"list", "--plugin", TESTBED_PLUGIN_EXAMPLE, "--plugin", copy.string()});
+  EXPECT_EQ(run.exitCode, 2) << run.describe();
+  EXPECT_EQ(run.err, "testbed: --plugin " + copy.string() + ": technique 'example-sm': the id is already registered\n");
+  // The same file twice loads once.
+  const RunResult twice = runTestbed({"list", "--plugin", TESTBED_PLUGIN_EXAMPLE, "--plugin", TESTBED_PLUGIN_EXAMPLE});
+  EXPECT_EQ(twice.exitCode, 0) << twice.describe();
+}
+
+TEST(Plugin, InvalidParameterSpecIsRejected) {
+  expectRejected(TESTBED_PLUGIN_BAD_PARAMETER_SPEC,
+                 "technique 'bad-plugin': parameter 'kernel': default 4 is outside [1, 3]");
+}
+
+TEST(Plugin, OtherApiVersionIsRejected) {
+  expectRejected(TESTBED_PLUGIN_BAD_API_VERSION, "built for plugin API version 101");
+}
+
+}  // namespace
