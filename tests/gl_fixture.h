@@ -1,10 +1,20 @@
 #pragma once
 // One OSMesa context for the whole test binary (created on first use), so GL tests do not
-// pay for a context each.
+// pay for a context each; and the two runs most image tests need.
+#include <map>
+#include <string>
+
+#include "testbed/app/frame_runner.h"
 #include "testbed/gl/context.h"
 
 namespace testbed::test {
 
 GlContext& sharedContext();
+
+// Registered technique `id`, its defaults overridden by `set` (name → value as on --set).
+TechniqueRun runTechnique(FrameRunner& runner, const std::string& id,
+                          const std::map<std::string, std::string>& set = {});
+// The stencil shadow-volume ground truth of the runner's frame.
+ImageF groundTruthVisibility(FrameRunner& runner);
 
 }  // namespace testbed::test

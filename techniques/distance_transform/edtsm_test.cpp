@@ -10,7 +10,6 @@
 #include <map>
 #include <string>
 
-#include "groundtruth/shadow_volumes.h"
 #include "testbed/app/frame_runner.h"
 #include "testbed/metrics/metrics.h"
 #include "tests/gl_fixture.h"
@@ -24,20 +23,23 @@ class Edtsm : public ::testing::Test {
  protected:
   void SetUp() override { test::sharedContext(); }
   static TechniqueRun run(FrameRunner& runner, const std::string& id, const Assignments& set = {}) {
-    const auto& technique = findTechnique(id);
-    return runner.run(technique, resolveParameters(id, technique.info->parameters, set));
+    return test::runTechnique(runner, id, set);
   }
   static Scene bundled(const std::string& name) {
     return loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/" + name + ".json");
+  }
+  // Small frames for the plumbing tests.
+  static RenderSettings small() {
+    RenderSettings settings;
+    settings.size = {320, 180};
+    settings.shadowMapSize = 256;
+    return settings;
   }
 };
 
 TEST_F(Edtsm, PassesAndMemory) {
   const Scene scene = bundled("bunny");
-  RenderSettings settings;
-  settings.size = {320, 180};
-  settings.shadowMapSize = 256;
-  FrameRunner runner(scene, settings);
+  FrameRunner runner(scene, small());
   const TechniqueRun sm = run(runner, "sm");
   for (const std::string id : {"edtsm", "edtsm-star"}) {
     const TechniqueRun r = run(runner, id);
@@ -52,10 +54,7 @@ TEST_F(Edtsm, PassesAndMemory) {
 // improved, pixel for pixel.
 TEST_F(Edtsm, WithoutPenumbraItIsRbsm) {
   const Scene scene = bundled("fence");
-  RenderSettings settings;
-  settings.size = {320, 180};
-  settings.shadowMapSize = 256;
-  FrameRunner runner(scene, settings);
+  FrameRunner runner(scene, small());
   const Assignments hard{{"penumbra", "0"}, {"filter_width", "0"}};
   const ImageF conservative = run(runner, "smsr").visibility;
   const ImageF improved = run(runner, "smsr", {{"visibility", "improved"}}).visibility;
@@ -74,10 +73,7 @@ TEST_F(Edtsm, WithoutPenumbraItIsRbsm) {
 // intermediate values exist; a larger P widens the penumbra.
 TEST_F(Edtsm, PenumbraSidesAndWidth) {
   const Scene scene = bundled("wall");
-  RenderSettings settings;
-  settings.size = {320, 180};
-  settings.shadowMapSize = 256;
-  FrameRunner runner(scene, settings);
+  FrameRunner runner(scene, small());
   const ImageF hard = run(runner, "smsr", {{"visibility", "improved"}}).visibility;
   int previousPenumbra = 0;
   for (const std::string p : {"0.5", "1", "2"}) {
@@ -113,11 +109,7 @@ TEST_F(Edtsm, ImprovedOverestimatesLessAgainstShadowVolumes) {
       settings.shadowMapSize = mapSize;
       const Scene scene = bundled(name);
       FrameRunner runner(scene, settings);
-      const ImageF truth =
-          runner
-              .run(shadowVolumeGroundTruth(),
-                   resolveParameters("groundtruth", shadowVolumeGroundTruth().info->parameters, {}))
-              .visibility;
+      const ImageF truth = test::groundTruthVisibility(runner);
       std::map<std::string, std::pair<ErrorMetrics, double>> m;
       for (const std::string id : {"sm", "edtsm", "edtsm-star"}) {
         const ImageF v = run(runner, id).visibility;

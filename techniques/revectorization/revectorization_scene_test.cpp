@@ -19,7 +19,6 @@
 #include <map>
 #include <string>
 
-#include "groundtruth/shadow_volumes.h"
 #include "testbed/app/frame_runner.h"
 #include "testbed/metrics/metrics.h"
 #include "tests/gl_fixture.h"
@@ -39,8 +38,7 @@ struct Measured {
 
 Measured measure(FrameRunner& runner, const ImageF& truth, const std::string& id, const Assignments& set,
                  const std::string& label, const std::string& scene, int mapSize) {
-  const auto& technique = findTechnique(id);
-  const ImageF v = runner.run(technique, resolveParameters(id, technique.info->parameters, set)).visibility;
+  const ImageF v = test::runTechnique(runner, id, set).visibility;
   Measured r{computeErrorMetrics(v, truth), computeErrorMetrics(v, truth, nullptr, {.marginPx = 0.5}).overestimationPct};
   const ErrorMetrics& m = r.m;
   char line[260];
@@ -67,11 +65,7 @@ TEST_F(RevectorizationScene, AgainstShadowVolumesOnTheBundledScenes) {
       settings.size = {640, 360};
       settings.shadowMapSize = mapSize;
       FrameRunner runner(scene, settings);
-      const ImageF truth =
-          runner
-              .run(shadowVolumeGroundTruth(),
-                   resolveParameters("groundtruth", shadowVolumeGroundTruth().info->parameters, {}))
-              .visibility;
+      const ImageF truth = test::groundTruthVisibility(runner);
       auto run = [&](const std::string& id, const Assignments& set, const std::string& label) {
         return measure(runner, truth, id, set, label, name, mapSize);
       };
@@ -117,8 +111,7 @@ TEST_F(RevectorizationScene, RpcfKernelOneEqualsItsBaseOnAScene) {
   settings.shadowMapSize = 256;
   FrameRunner runner(scene, settings);
   auto visibility = [&](const std::string& id, const Assignments& set) {
-    const auto& technique = findTechnique(id);
-    return runner.run(technique, resolveParameters(id, technique.info->parameters, set)).visibility;
+    return test::runTechnique(runner, id, set).visibility;
   };
   auto same = [](const ImageF& a, const ImageF& b) {
     int differing = 0;
@@ -142,10 +135,9 @@ TEST_F(RevectorizationScene, DebugViewsAreReturnedOnlyWhenAsked) {
   std::map<std::string, ImageF> views;
   for (const std::string id : {"smsr", "smsr-2pass"}) {
     SCOPED_TRACE(id);
-    const auto& technique = findTechnique(id);
-    EXPECT_TRUE(runner.run(technique, resolveParameters(id, technique.info->parameters, {})).debugImages.empty());
+    EXPECT_TRUE(test::runTechnique(runner, id).debugImages.empty());
     for (const std::string view : {"discontinuity", "onds"}) {
-      const auto run = runner.run(technique, resolveParameters(id, technique.info->parameters, {{"debug", view}}));
+      const auto run = test::runTechnique(runner, id, {{"debug", view}});
       ASSERT_EQ(run.debugImages.size(), 1u);
       EXPECT_EQ(run.debugImages[0].first, view);
       const ImageF& image = run.debugImages[0].second;

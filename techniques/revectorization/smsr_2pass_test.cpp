@@ -6,7 +6,6 @@
 #include <iostream>
 #include <string>
 
-#include "groundtruth/shadow_volumes.h"
 #include "testbed/app/frame_runner.h"
 #include "testbed/metrics/metrics.h"
 #include "tests/gl_fixture.h"
@@ -23,14 +22,8 @@ TEST(SmsrTwoPass, PassesMemoryAndErrorAgainstSinglePass) {
     settings.size = {640, 360};
     settings.shadowMapSize = mapSize;
     FrameRunner runner(scene, settings);
-    const ImageF truth = runner
-                             .run(shadowVolumeGroundTruth(),
-                                  resolveParameters("groundtruth", shadowVolumeGroundTruth().info->parameters, {}))
-                             .visibility;
-    auto run = [&](const std::string& id) {
-      const auto& technique = findTechnique(id);
-      return runner.run(technique, resolveParameters(id, technique.info->parameters, {}));
-    };
+    const ImageF truth = test::groundTruthVisibility(runner);
+    auto run = [&](const std::string& id) { return test::runTechnique(runner, id); };
     const TechniqueRun sm = run("sm"), single = run("smsr"), two = run("smsr-2pass");
     EXPECT_EQ(two.times.order, (std::vector<std::string>{"shadow-map", "discontinuity", "revectorize"}));
     EXPECT_EQ(two.memoryBytes, single.memoryBytes + 640u * 360u * 4u);
