@@ -216,6 +216,11 @@ TEST(Plugin, InvalidParameterSpecIsRejected) {
                  "technique 'bad-plugin': parameter 'kernel': default 4 is outside [1, 3]");
 }
 
+TEST(Plugin, ShaderUnderATakenNameWithOtherTextIsRejected) {
+  expectRejected(TESTBED_PLUGIN_BAD_SHADER_CLASH,
+                 "shader 'techniques/shadow_map/shadow_map_visibility.frag' is already embedded with other text");
+}
+
 TEST(Plugin, OtherApiVersionIsRejected) {
   expectRejected(TESTBED_PLUGIN_BAD_API_VERSION, "built for plugin API version 101");
 }

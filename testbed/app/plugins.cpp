@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "testbed/core/error.h"
+#include "testbed/gl/shader_library.h"
 #include "testbed/technique/plugin.h"
 
 namespace testbed {
@@ -101,6 +102,7 @@ void loadPlugin(const std::string& path, std::set<void*>& loaded) {
   void* handle = nullptr;
   {
     StaticRegistrationCapture capture(techniques);  // TESTBED_REGISTER_TECHNIQUE in the plugin
+    takeShaderConflicts();  // only this library's count
     dlerror();
     // RTLD_NOW: a plugin built against another testbed fails here on an unresolved symbol
     // instead of later, mid-frame. The library stays loaded for the process's lifetime:
@@ -109,6 +111,9 @@ void loadPlugin(const std::string& path, std::set<void*>& loaded) {
   }
   if (!handle) throw InputError(where + ": cannot load it as a shared library: " + loaderMessage(file));
   if (!loaded.insert(handle).second) return;  // the same file twice (another path, a link)
+  if (const auto clashes = takeShaderConflicts(); !clashes.empty())
+    throw InputError(where + ": shader '" + clashes.front() +
+                     "' is already embedded with other text; keep a plugin's shaders in a folder of its own");
 
   auto* version = reinterpret_cast<testbed_plugin_api_version_fn*>(dlsym(handle, "testbed_plugin_api_version"));
   auto* entry = reinterpret_cast<testbed_register_plugin_fn*>(dlsym(handle, "testbed_register_plugin"));

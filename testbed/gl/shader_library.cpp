@@ -44,8 +44,20 @@ void expandInto(std::string_view key, std::set<std::string, std::less<>>& includ
 
 }  // namespace
 
+std::vector<std::string>& conflicts() {
+  static std::vector<std::string> keys;
+  return keys;
+}
+
 ShaderRegistration::ShaderRegistration(const char* key, const char* source) {
-  library().emplace(key, source);
+  const auto [it, inserted] = library().emplace(key, source);
+  if (!inserted && it->second != source) conflicts().emplace_back(key);
+}
+
+std::vector<std::string> takeShaderConflicts() {
+  std::vector<std::string> keys;
+  keys.swap(conflicts());
+  return keys;
 }
 
 std::string_view embeddedShader(std::string_view key) {

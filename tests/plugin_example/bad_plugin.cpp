@@ -1,6 +1,13 @@
 // Broken plugins for tests/plugin_test.cpp, one per BAD_* definition: each must be turned
 // away by the loader with exit code 2 and a line naming the library.
+#include "testbed/gl/shader_library.h"
 #include "testbed/technique/plugin.h"
+
+#if defined(BAD_SHADER_CLASH)
+// Other text under a key the testbed embeds: it would be silently ignored.
+static const testbed::ShaderRegistration clash("techniques/shadow_map/shadow_map_visibility.frag",
+                                               "#version 450 core\nvoid main() {}\n");
+#endif
 
 namespace {
 
