@@ -1,0 +1,137 @@
+// `silhouette-map`: shadow silhouette maps (Sen, Cammarano & Hanrahan 2003; Chan's course
+// notes, seed 003). Three timed passes: the shared depth map ("shadow-map"), the
+// silhouette map ("silhouette-map": CPU silhouette extraction, upload, conservative edge
+// rasterization) and the final screen pass ("visibility").
+#include <array>
+#include <vector>
+
+#include "groundtruth/volume_geometry.h"
+#include "techniques/silhouette_map/silhouette_edges.h"
+#include "testbed/render/receiver_inputs.h"
+#include "testbed/render/screen_pass.h"
+#include "testbed/render/shadow_map_pass.h"
+#include "testbed/technique/registry.h"
+#include "testbed/technique/technique.h"
+
+namespace testbed {
+namespace {
+
+class SilhouetteMap final : public ShadowTechnique {
+ public:
+  static const TechniqueInfo& staticInfo() {
+    static const TechniqueInfo info = [] {
+      TechniqueInfo i;
+      i.id = "silhouette-map";
+      i.family = "silhouette_map";
+      i.output = OutputKind::Hard;
+      i.citation = "Sen, Cammarano, Hanrahan, Shadow silhouette maps, SIGGRAPH 2003";
+      i.summary = "depth map plus one silhouette point per dual-grid texel; piecewise-linear shadow edges";
+      i.parameters = {
+          ParameterSpec::real("bias", 0.0, -1.0, 1.0, "constant depth bias subtracted from the receiver's light depth"),
+          ParameterSpec::real("occlusion_bias", 0.001, 0.0, 1.0,
+                              "depth tolerance of the hidden-edge test: an edge point counts as hidden "
+                              "when it lies farther than this behind all four corner depth samples"),
+      };
+      for (auto& spec : ShadowMapPass::parameters()) i.parameters.push_back(spec);
+      return i;
+    }();
+    return info;
+  }
+  const TechniqueInfo& info() const override { return staticInfo(); }
+
+  void configure(const ParameterSet& parameters) override {
+    shadowMap_.configure(parameters);
+    bias_ = static_cast<float>(parameters.getFloat("bias"));
+    occlusionBias_ = static_cast<float>(parameters.getFloat("occlusion_bias"));
+  }
+
+  void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {
+    prepare(in);
+    shadowMap_.render(in, timer);
+    {
+      auto scope = timer.scope("silhouette-map");
+      renderSilhouetteMap(in);
+    }
+    {
+      auto scope = timer.scope("visibility");
+      bindReceiverInputs(visibilityProgram_, in);
+      bindShadowMap(visibilityProgram_, shadowMap_.depth());
+      glBindTextureUnit(3, silhouettes_.id());
+      visibilityProgram_.set("uSilhouetteMap", 3);
+      visibilityProgram_.set("uBias", bias_);
+      screen_.draw(visibilityProgram_, out.framebuffer, in.size);
+    }
+  }
+
+ private:
+  // Programs, the (N + 1)² silhouette map and the scene's adjacency, made once.
+  void prepare(const FrameInputs& in) {
+    if (!edgeProgram_) {
+      edgeProgram_ = Program::graphics("techniques/silhouette_map/silhouette_map_edges.vert",
+                                       "techniques/silhouette_map/silhouette_map_points.frag");
+      visibilityProgram_ =
+          Program::graphics("testbed/render/fullscreen.vert", "techniques/silhouette_map/silhouette_map_visibility.frag");
+      emptyVertexArray_ = VertexArray::create();
+    }
+    const int side = in.shadowMapSize + 1;  // one more than the depth map: see silhouette_map.glsl
+    if (!silhouettes_ || silhouettes_.width() != side) {
+      // 16-bit unorm offsets in the texel: 1/65535 of a texel, the notes ask for ≥ fp16.
+      silhouettes_ = Texture::create2D(GL_RG16, side, side);
+      silhouettes_.setFilter(GL_NEAREST, GL_NEAREST);
+      framebuffer_ = Framebuffer::create();
+      framebuffer_.attachColor(0, silhouettes_);
+      framebuffer_.finish({0});
+    }
+    if (topologyScene_ != &in.scene || topology_.size() != in.scene.objects.size()) {
+      topology_.clear();
+      for (const auto& object : in.scene.objects) topology_.push_back(volumeTopology(object.mesh));
+      topologyScene_ = &in.scene;
+    }
+  }
+
+  void renderSilhouetteMap(const FrameInputs& in) {
+    // Silhouettes depend on the light, so they are found every frame (the notes' CPU loop).
+    endpoints_.clear();
+    std::size_t edges = 0;
+    for (const auto& mesh : topology_) edges += appendSilhouetteEdges(mesh, in.light, endpoints_);
+    const std::size_t bytes = endpoints_.size() * sizeof(glm::vec4);
+    if (bytes > edgeBuffer_.bytes()) edgeBuffer_ = Buffer::create(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    if (bytes > 0) glNamedBufferSubData(edgeBuffer_.id(), 0, static_cast<GLsizeiptr>(bytes), endpoints_.data());
+
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+    glViewport(0, 0, silhouettes_.width(), silhouettes_.height());
+    const std::array<float, 4> centre{0.5f, 0.5f, 0.0f, 0.0f};  // the default point (notes: glClear)
+    glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, centre.data());
+    if (edges == 0) return;
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    edgeProgram_.use();
+    edgeProgram_.set("uLightViewProjection", in.light.viewProjection());
+    edgeProgram_.set("uMapSize", static_cast<float>(in.shadowMapSize));
+    edgeProgram_.set("uOcclusionBias", occlusionBias_);
+    bindShadowMap(edgeProgram_, shadowMap_.depth());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, edgeBuffer_.id());
+    glBindVertexArray(emptyVertexArray_.id());
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(6 * edges));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  }
+
+  float bias_ = 0.0f, occlusionBias_ = 0.001f;
+  ShadowMapPass shadowMap_;
+  ScreenPass screen_;
+  Program edgeProgram_, visibilityProgram_;
+  VertexArray emptyVertexArray_;
+  Texture silhouettes_;
+  Framebuffer framebuffer_;
+  Buffer edgeBuffer_;
+  std::vector<glm::vec4> endpoints_;
+  std::vector<VolumeTopology> topology_;
+  const Scene* topologyScene_ = nullptr;
+};
+
+}  // namespace
+
+TESTBED_REGISTER_TECHNIQUE(SilhouetteMap);
+
+}  // namespace testbed

@@ -1,0 +1,22 @@
+#version 450 core
+// One silhouette point per texel (seed 003): pick it by the diagonal rules, drop edges
+// the light does not see (behind all four corner depth samples), write the point as an
+// offset in [0,1]² of the texel. Later edges overwrite earlier ones, as in the paper.
+#include "testbed/glsl/shadow_test.glsl"
+#include "techniques/silhouette_map/silhouette_map.glsl"
+
+flat in vec3 vA;
+flat in vec3 vB;
+uniform float uOcclusionBias;
+layout(location = 0) out vec2 outPoint;
+
+void main() {
+  ivec2 texel = ivec2(floor(gl_FragCoord.xy));
+  vec3 origin = vec3(vec2(texel), 0.0);
+  vec3 point;
+  if (!silhouettePoint(vA - origin, vB - origin, point)) discard;
+  float seen = 0.0;
+  for (int c = 0; c < 4; ++c) seen += shadowTestTexel(texel - 1 + ivec2(c & 1, c >> 1), point.z, uOcclusionBias);
+  if (seen == 0.0) discard;
+  outPoint = point.xy;
+}
