@@ -39,8 +39,8 @@ void EdtShadowMapping::allocate(glm::ivec2 size) {
   };
   hard_ = make(GL_R8);
   seeds_ = make(GL_R8);
-  intensity_ = make(GL_R32F);
-  filtered_ = make(GL_R32F);
+  intensity_ = make(GL_RG32F);
+  filtered_ = make(GL_RG32F);
 }
 
 void EdtShadowMapping::bindScreenInputs(const Program& program, const FrameInputs& in) const {
@@ -59,6 +59,7 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
   }
   allocate(in.size);
   const float zero[4] = {0, 0, 0, 0};
+  const float noReceiver[4] = {0, -1, 0, 0};  // intensity 0, depth −1: the filter skips it
   shadowMap_.render(in, timer);
   {
     auto scope = timer.scope("rbsm");
@@ -81,7 +82,7 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
   }
   {
     auto scope = timer.scope("penumbra");
-    glClearNamedFramebufferfv(intensity_.target.id(), GL_COLOR, 0, zero);
+    glClearNamedFramebufferfv(intensity_.target.id(), GL_COLOR, 0, noReceiver);
     bindScreenInputs(penumbraProgram_, in);
     glBindTextureUnit(4, hard_.texture.id());
     glBindTextureUnit(5, featureTransform_.nearest().id());
@@ -99,7 +100,7 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
     filterProgram_.set("uCameraPosition", glm::vec3(glm::inverse(in.camera.view)[3]));
     filterProgram_.set("uMaxRadius", maxFilterRadius_);
     filterProgram_.set("uIntensity", 4);
-    glClearNamedFramebufferfv(filtered_.target.id(), GL_COLOR, 0, zero);
+    glClearNamedFramebufferfv(filtered_.target.id(), GL_COLOR, 0, noReceiver);
     glBindTextureUnit(4, intensity_.texture.id());
     filterProgram_.set("uDirection", glm::ivec2(1, 0));
     screen_.draw(filterProgram_, filtered_.target, in.size);

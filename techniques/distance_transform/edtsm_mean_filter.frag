@@ -6,35 +6,36 @@
 // the same surface and facing the light take part.
 #include "techniques/distance_transform/edtsm_screen.glsl"
 
-uniform sampler2D uIntensity;
-uniform ivec2 uDirection;     // (1, 0) or (0, 1)
-uniform float uFilterWidth;   // world units
+uniform sampler2D uIntensity;   // x: intensity, y: camera depth or −1 (see edtsm_penumbra.frag)
+uniform ivec2 uDirection;       // (1, 0) or (0, 1)
+uniform float uFilterWidth;     // world units
 uniform float uScreenDistance;  // z_screen
 uniform vec3 uCameraPosition;
-uniform int uMaxRadius;       // pixels
-layout(location = 0) out float outIntensity;
+uniform int uMaxRadius;         // pixels
+layout(location = 0) out vec2 outIntensity;  // the same layout, for the second direction
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec3 position;
-  float depth;
-  if (!receiverDepth(pixel, position, depth)) discard;
-  if (!litByFacing(pixel)) {  // shadowed by the facing rule, as in every technique
-    outIntensity = 0.0;
+  Receiver r;
+  if (!loadReceiver(pixel, r)) discard;
+  vec2 centre = texelFetch(uIntensity, pixel, 0).xy;
+  if (centre.y < 0.0) {  // shadowed by the facing rule, as in every technique
+    outIntensity = vec2(0.0, -1.0);
     return;
   }
   float heightPx = float(textureSize(uGPosition, 0).y);
-  float widthPx = uFilterWidth * uScreenDistance / distance(position, uCameraPosition) * heightPx;
+  float widthPx = uFilterWidth * uScreenDistance / distance(r.position, uCameraPosition) * heightPx;
   int radius = min(int(floor(0.5 * widthPx)), uMaxRadius);
+  ivec2 size = textureSize(uIntensity, 0);
   float sum = 0.0;
   float count = 0.0;
   for (int i = -radius; i <= radius; ++i) {
     ivec2 q = pixel + i * uDirection;
-    vec3 qPosition;
-    float qDepth;
-    if (!receiverDepth(q, qPosition, qDepth) || !sameSurface(depth, qDepth) || !litByFacing(q)) continue;
-    sum += texelFetch(uIntensity, q, 0).r;
+    if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
+    vec2 tap = texelFetch(uIntensity, q, 0).xy;
+    if (tap.y < 0.0 || !sameSurface(centre.y, tap.y)) continue;  // −1: off the receivers or facing away
+    sum += tap.x;
     count += 1.0;
   }
-  outIntensity = sum / count;  // count ≥ 1: the pixel itself
+  outIntensity = vec2(sum / count, centre.y);  // count ≥ 1: the pixel itself
 }
