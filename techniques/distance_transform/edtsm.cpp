@@ -37,7 +37,7 @@ void EdtShadowMapping::allocate(glm::ivec2 size) {
     t.target.finish({0});
     return t;
   };
-  hard_ = make(GL_R8);
+  hard_ = make(GL_RG32F);
   seeds_ = make(GL_R8);
   intensity_ = make(GL_RG32F);
   filtered_ = make(GL_RG32F);
@@ -52,19 +52,18 @@ void EdtShadowMapping::bindScreenInputs(const Program& program, const FrameInput
 void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
   if (!rbsmProgram_) {
     const auto program = [](const char* key) { return Program::graphics("testbed/render/fullscreen.vert", key); };
-    rbsmProgram_ = program("techniques/revectorization/smsr.frag");
+    rbsmProgram_ = program("techniques/distance_transform/edtsm_rbsm.frag");
     seedsProgram_ = program("techniques/distance_transform/edtsm_seeds.frag");
     penumbraProgram_ = program("techniques/distance_transform/edtsm_penumbra.frag");
     filterProgram_ = program("techniques/distance_transform/edtsm_mean_filter.frag");
   }
   allocate(in.size);
-  const float zero[4] = {0, 0, 0, 0};
-  const float noReceiver[4] = {0, -1, 0, 0};  // intensity 0, depth −1: the filter skips it
+  const float noReceiver[4] = {0, -1, 0, 0};  // value 0, depth −1: later passes skip it
   shadowMap_.render(in, timer);
   {
     auto scope = timer.scope("rbsm");
-    glClearNamedFramebufferfv(hard_.target.id(), GL_COLOR, 0, zero);
-    bindReceiverInputs(rbsmProgram_, in);
+    glClearNamedFramebufferfv(hard_.target.id(), GL_COLOR, 0, noReceiver);
+    bindScreenInputs(rbsmProgram_, in);
     rbsm_.bindLibrary(rbsmProgram_, shadowMap_.depth());
     rbsmProgram_.set("uImproved", improved_ ? 1 : 0);
     screen_.draw(rbsmProgram_, hard_.target, in.size);
@@ -73,7 +72,7 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
   {
     auto scope = timer.scope("seeds");
     bindScreenInputs(seedsProgram_, in);
-    seedsProgram_.set("uHardVisibility", 4);
+    seedsProgram_.set("uHard", 4);
     screen_.draw(seedsProgram_, seeds_.target, in.size);
   }
   {
@@ -86,7 +85,7 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
     bindScreenInputs(penumbraProgram_, in);
     glBindTextureUnit(4, hard_.texture.id());
     glBindTextureUnit(5, featureTransform_.nearest().id());
-    penumbraProgram_.set("uHardVisibility", 4);
+    penumbraProgram_.set("uHard", 4);
     penumbraProgram_.set("uNearestSeed", 5);
     penumbraProgram_.set("uPenumbra", penumbra_);
     screen_.draw(penumbraProgram_, intensity_.target, in.size);

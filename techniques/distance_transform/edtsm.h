@@ -3,7 +3,7 @@
 // their improved anti-aliasing paper, seed 004): fixed-size penumbrae from RBSM's anti-aliased hard shadows. Passes, each timed:
 //   shadow-map   the shared shadow map
 //   rbsm         single-pass SMSR's hard visibility (conservative for edtsm, improved for
-//                edtsm-star) into a screen texture
+//                edtsm-star) and the camera depth into a screen texture
 //   seeds        receivers with an 8-neighbour on the same surface of the other visibility
 //   edt          the exact screen-space feature transform: each pixel's nearest seed
 //   penumbra     eq. 8 on the world-space distance to that seed

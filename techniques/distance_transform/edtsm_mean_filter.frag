@@ -6,7 +6,7 @@
 // the same surface and facing the light take part.
 #include "techniques/distance_transform/edtsm_screen.glsl"
 
-uniform sampler2D uIntensity;   // x: intensity, y: camera depth or −1 (see edtsm_penumbra.frag)
+uniform sampler2D uIntensity;   // (intensity, camera depth or −1)
 uniform ivec2 uDirection;       // (1, 0) or (0, 1)
 uniform float uFilterWidth;     // world units
 uniform float uScreenDistance;  // z_screen
@@ -26,13 +26,10 @@ void main() {
   float heightPx = float(textureSize(uGPosition, 0).y);
   float widthPx = uFilterWidth * uScreenDistance / distance(r.position, uCameraPosition) * heightPx;
   int radius = min(int(floor(0.5 * widthPx)), uMaxRadius);
-  ivec2 size = textureSize(uIntensity, 0);
   float sum = 0.0;
   float count = 0.0;
   for (int i = -radius; i <= radius; ++i) {
-    ivec2 q = pixel + i * uDirection;
-    if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
-    vec2 tap = texelFetch(uIntensity, q, 0).xy;
+    vec2 tap = fetchWithDepth(uIntensity, pixel + i * uDirection);
     if (tap.y < 0.0 || !sameSurface(centre.y, tap.y)) continue;  // −1: off the receivers or facing away
     sum += tap.x;
     count += 1.0;

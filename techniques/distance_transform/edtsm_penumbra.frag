@@ -6,24 +6,22 @@
 // answer stays.
 #include "techniques/distance_transform/edtsm_screen.glsl"
 
-uniform sampler2D uHardVisibility;
+uniform sampler2D uHard;          // (RBSM visibility, camera depth or −1)
 uniform isampler2D uNearestSeed;  // pixel coordinates of the nearest seed, (-1, -1): none
 uniform float uPenumbra;
-// x: the intensity; y: the camera depth, or −1 where the mean filter must not look (receivers
-// facing away from the light), so the filter needs one fetch per tap.
+// (intensity, camera depth or −1): the mean filter then needs one fetch per tap.
 layout(location = 0) out vec2 outIntensity;
 
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec3 position;
-  float depth;
-  if (!receiverDepth(pixel, position, depth)) discard;
-  float v = texelFetch(uHardVisibility, pixel, 0).r;
-  outIntensity = vec2(v, litByFacing(pixel) ? depth : -1.0);
+  Receiver r;
+  if (!loadReceiver(pixel, r)) discard;
+  vec2 centre = fetchWithDepth(uHard, pixel);
+  outIntensity = centre;
   ivec2 seed = texelFetch(uNearestSeed, pixel, 0).xy;
-  vec3 seedPosition;
-  float seedDepth;
-  if (uPenumbra <= 0.0 || outIntensity.y < 0.0 || seed.x < 0 || !receiverDepth(seed, seedPosition, seedDepth) || !sameSurface(depth, seedDepth)) return;
-  float d = distance(position, seedPosition);
-  if (d <= 0.5 * uPenumbra) outIntensity.x = v < 0.5 ? 0.5 - d / uPenumbra : 0.5 + d / uPenumbra;
+  if (uPenumbra <= 0.0 || centre.y < 0.0 || seed.x < 0) return;
+  vec2 atSeed = fetchWithDepth(uHard, seed);
+  if (atSeed.y < 0.0 || !sameSurface(centre.y, atSeed.y)) return;
+  float d = distance(r.position, texelFetch(uGPosition, seed, 0).xyz);
+  if (d <= 0.5 * uPenumbra) outIntensity.x = centre.x < 0.5 ? 0.5 - d / uPenumbra : 0.5 + d / uPenumbra;
 }
