@@ -13,7 +13,6 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "groundtruth/shadow_volumes.h"
 #include "groundtruth/volume_geometry.h"
 #include "techniques/silhouette_map/silhouette_edges.h"
 #include "testbed/app/frame_runner.h"
@@ -29,10 +28,7 @@ struct Compared {
   ErrorMetrics smError, silhouetteError;
 };
 
-TechniqueRun runDefault(FrameRunner& runner, const std::string& id) {
-  const auto& technique = findTechnique(id);
-  return runner.run(technique, resolveParameters(id, technique.info->parameters, {}));
-}
+TechniqueRun runDefault(FrameRunner& runner, const std::string& id) { return test::runTechnique(runner, id); }
 
 Compared compare(const Scene& scene, int mapSize, const std::string& label) {
   test::sharedContext();
@@ -40,9 +36,7 @@ Compared compare(const Scene& scene, int mapSize, const std::string& label) {
   settings.size = {640, 360};
   settings.shadowMapSize = mapSize;
   FrameRunner runner(scene, settings);
-  const ImageF truth =
-      runner.run(shadowVolumeGroundTruth(), resolveParameters("groundtruth", shadowVolumeGroundTruth().info->parameters, {}))
-          .visibility;
+  const ImageF truth = test::groundTruthVisibility(runner);
   Compared c{runDefault(runner, "sm"), runDefault(runner, "silhouette-map"), {}, {}};
   c.smError = computeErrorMetrics(c.sm.visibility, truth);
   c.silhouetteError = computeErrorMetrics(c.silhouette.visibility, truth);
@@ -160,9 +154,7 @@ TEST(SilhouetteMapScene, DragonErrorsLieWhereEdgesShareATexel) {
   settings.size = {640, 360};
   settings.shadowMapSize = n;
   FrameRunner runner(scene, settings);
-  const ImageF truth =
-      runner.run(shadowVolumeGroundTruth(), resolveParameters("groundtruth", shadowVolumeGroundTruth().info->parameters, {}))
-          .visibility;
+  const ImageF truth = test::groundTruthVisibility(runner);
   const ImageF sm = runDefault(runner, "sm").visibility, sil = runDefault(runner, "silhouette-map").visibility;
 
   // Silhouette space of silhouette_map.glsl; texels each edge crosses, by dense sampling.
