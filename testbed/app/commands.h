@@ -41,5 +41,7 @@ CommandRunner addListCommand(CLI::App& app);
 CommandRunner addRenderCommand(CLI::App& app);
 CommandRunner addGroundTruthCommand(CLI::App& app);
 CommandRunner addCompareCommand(CLI::App& app);
+// `check`: exit 0 no regression, 3 regressions found, 2 bad input (README "Regression check").
+CommandRunner addCheckCommand(CLI::App& app);
 
 }  // namespace testbed

@@ -1,5 +1,6 @@
 // The `testbed` command line (README "Command line"). Exit codes: 0 success, 2 bad input
-// (one line naming the file/option/field), 1 any other failure.
+// (one line naming the file/option/field), 1 any other failure; `check` returns 3 when it
+// finds regressions.
 #include <iostream>
 
 #include <CLI/CLI.hpp>
@@ -13,7 +14,8 @@ int main(int argc, char** argv) {
   const std::vector<testbed::CommandRunner> commands = {testbed::addListCommand(app),
                                                         testbed::addRenderCommand(app),
                                                         testbed::addGroundTruthCommand(app),
-                                                        testbed::addCompareCommand(app)};
+                                                        testbed::addCompareCommand(app),
+                                                        testbed::addCheckCommand(app)};
   // CLI11 would only say "a subcommand is required" for a mistyped one: name it instead.
   if (argc > 1 && argv[1][0] != '-') {
     std::string known;
