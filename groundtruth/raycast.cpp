@@ -211,7 +211,6 @@ class RayCast final : public ShadowTechnique {
   // the result does not depend on the number of threads.
   void trace(const FrameInputs& in, int first, int stride) {
     const LightTransforms& light = in.light;
-    const glm::mat4 lightViewProjection = light.viewProjection();
     // Self-intersection: the receiver lies ON a triangle of the scene, so the ray's first
     // candidate hit is its own surface at t ≈ 0 (± the G-buffer's float rounding). tnear
     // skips hits closer than ε along the ray: the ray keeps the exact line from the
@@ -241,10 +240,7 @@ class RayCast final : public ShadowTechnique {
         // Same rules, same order of float operations as glsl/receiver.glsl.
         const glm::vec3 towards = light.orthographic ? -light.direction : glm::normalize(light.position - p);
         if (glm::dot(n, towards) <= 0.0f) continue;  // faces away: shadowed
-        const glm::vec4 clip = lightViewProjection * glm::vec4(p, 1.0f);
-        if (clip.w <= 0.0f) continue;  // behind the light: outside the frustum
-        const glm::vec3 ndc = glm::vec3(clip) / clip.w * 0.5f + 0.5f;
-        if (!(ndc.x >= 0.0f && ndc.y >= 0.0f && ndc.x <= 1.0f && ndc.y <= 1.0f && ndc.z <= 1.0f)) continue;
+        if (!insideLightFrustum(light, p)) continue;  // outside the frustum: shadowed
 
         RTCRay ray;
         ray.org_x = p.x;

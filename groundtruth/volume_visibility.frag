@@ -10,8 +10,6 @@ layout(location = 0) out float outVisibility;
 void main() {
   Receiver r;
   if (!loadReceiver(ivec2(gl_FragCoord.xy), r)) discard;
-  vec3 light = lightSpace(r.position);
-  bool inFrustum = all(greaterThanEqual(light.xy, vec2(0.0))) && all(lessThanEqual(light.xy, vec2(1.0))) &&
-                   light.z <= 1.0;
+  bool inFrustum = insideLightFrustum(lightSpace(r.position));
   outVisibility = (facesAwayFromLight(r) || !inFrustum) ? 0.0 : uWeight;
 }

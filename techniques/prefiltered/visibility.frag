@@ -13,12 +13,9 @@ void main() {
   Receiver r;
   if (!loadReceiver(ivec2(gl_FragCoord.xy), r)) discard;
   vec3 light = lightSpace(r.position);
-  // Outside the light's frustum is shadow (the testbed's convention, and the ground truth's
-  // exact test): beside the map or beyond the far plane. The moments map is clamped to its
-  // edge for filtering, so the map itself cannot say so.
-  bool inFrustum = all(greaterThanEqual(light.xy, vec2(0.0))) && all(lessThanEqual(light.xy, vec2(1.0))) &&
-                   light.z <= 1.0;
-  if (facesAwayFromLight(r) || !inFrustum) {
+  // Outside the light's frustum is shadow (glsl/receiver.glsl's convention). The moments
+  // map is clamped to its edge for filtering, so the map itself cannot say so.
+  if (facesAwayFromLight(r) || !insideLightFrustum(light)) {
     outVisibility = 0.0;
     return;
   }

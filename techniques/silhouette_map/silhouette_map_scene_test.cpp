@@ -30,14 +30,15 @@ struct Compared {
 
 TechniqueRun runDefault(FrameRunner& runner, const std::string& id) { return test::runTechnique(runner, id); }
 
-Compared compare(const Scene& scene, int mapSize, const std::string& label) {
+Compared compare(const Scene& scene, int mapSize, const std::string& label,
+                 const std::map<std::string, std::string>& silhouetteSet = {}) {
   test::sharedContext();
   RenderSettings settings;
   settings.size = {640, 360};
   settings.shadowMapSize = mapSize;
   FrameRunner runner(scene, settings);
   const ImageF truth = test::groundTruthVisibility(runner);
-  Compared c{runDefault(runner, "sm"), runDefault(runner, "silhouette-map"), {}, {}};
+  Compared c{runDefault(runner, "sm"), test::runTechnique(runner, "silhouette-map", silhouetteSet), {}, {}};
   c.smError = computeErrorMetrics(c.sm.visibility, truth);
   c.silhouetteError = computeErrorMetrics(c.silhouette.visibility, truth);
   for (const auto& [name, m] : {std::pair{"sm", c.smError}, std::pair{"silhouette-map", c.silhouetteError}}) {
@@ -80,7 +81,11 @@ TEST(SilhouetteMapScene, SlantedSquareBoundaryFarCloserThanSm) {
     for (const int mapSize : {256, 512}) {
       SCOPED_TRACE(std::string(name) + " " + std::to_string(mapSize));
       const Scene scene = slantedSquare(light, name);
-      const Compared c = compare(scene, mapSize, name);
+      // The slab's 0.5-thick rim, nearly parallel to the spot's rays, takes its depth test
+      // from a corner sample on the top face up to 1.4 texels away; with the light's depth
+      // range fitted to the scene the offset's 20 units no longer span the rim, and the
+      // default slope factor 4 leaves rim pixels self-shadowed at 512². Factor 8 covers it.
+      const Compared c = compare(scene, mapSize, name, {{"offset_factor", "8"}});
       ASSERT_GT(c.smError.gtBoundaryPixels, 200);
       EXPECT_LT(c.silhouetteError.boundaryMean, 0.25 * c.smError.boundaryMean);
       EXPECT_LT(c.silhouetteError.edgeMismatchPct, 0.25 * c.smError.edgeMismatchPct);

@@ -23,8 +23,8 @@ void main() {
   Receiver r;
   if (!loadReceiver(ivec2(gl_FragCoord.xy), r)) discard;
   vec3 light = lightSpace(r.position);
-  // Outside the map: shadow, as sm's border lookup gives.
-  if (facesAwayFromLight(r) || any(lessThan(light.xy, vec2(0.0))) || any(greaterThan(light.xy, vec2(1.0)))) {
+  // Outside the light's frustum: shadow (glsl/receiver.glsl's convention).
+  if (facesAwayFromLight(r) || !insideLightFrustum(light)) {
     outVisibility = 0.0;
     return;
   }

@@ -8,7 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "testbed/core/error.h"
-#include "testbed/scene/view.h"
+#include "testbed/render/shadow_map_pass.h"
+#include "testbed/scene/light_fit.h"
 
 namespace testbed {
 namespace {
@@ -56,7 +57,8 @@ void validateSettings(const RenderSettings& s) {
 }
 
 FrameRunner::FrameRunner(const Scene& scene, const RenderSettings& settings)
-    : scene_(scene), settings_(settings), geometry_(scene), gbuffer_(settings.size) {
+    : scene_(scene), settings_(settings), light_(fittedLightTransforms(scene)), geometry_(scene),
+      gbuffer_(settings.size) {
   PassTimer timer;
   {
     auto scope = timer.scope("gbuffer");
@@ -73,7 +75,7 @@ FrameRunner::~FrameRunner() = default;
 FrameInputs FrameRunner::inputs() const {
   return FrameInputs{scene_, geometry_, gbuffer_, settings_.size,
                      cameraTransforms(scene_.camera, aspectOf(settings_.size)),
-                     lightTransforms(scene_.light), settings_.shadowMapSize, settings_.depthFormat};
+                     light_, settings_.shadowMapSize, settings_.depthFormat};
 }
 
 TechniqueSession::TechniqueSession(FrameRunner& runner, const RegisteredTechnique& technique,
@@ -154,7 +156,7 @@ TechniqueRun FrameRunner::run(const RegisteredTechnique& technique, const Parame
 ImageF FrameRunner::shade(const ImageF& visibility) const {
   constexpr float kAmbient = 0.15f, kAlbedo = 0.85f;
   const glm::vec3 background(0.18f, 0.2f, 0.24f);
-  const LightTransforms light = lightTransforms(scene_.light);
+  const LightTransforms& light = light_;
   ImageF image;
   image.width = visibility.width;
   image.height = visibility.height;
@@ -210,6 +212,7 @@ nlohmann::json makeRecord(const TechniqueRun& run, const FrameRunner& runner, co
       {"repeat", s.repeat},
       {"triangles", runner.triangleCount()},
       {"memory_bytes", run.memoryBytes},
+      {"light", lightSetupRecord(runner.light(), s.shadowMapSize, s.depthFormat, run.params)},
       {"backend", backend},
       {"error", nullptr},
   };

@@ -14,6 +14,7 @@
 #include "testbed/render/gbuffer_pass.h"
 #include "testbed/render/gpu_scene.h"
 #include "testbed/scene/scene.h"
+#include "testbed/scene/view.h"
 #include "testbed/technique/registry.h"
 
 namespace testbed {
@@ -86,6 +87,8 @@ class FrameRunner {
   const Scene& scene() const { return scene_; }
   const RenderSettings& settings() const { return settings_; }
   const PassTimes& gbufferTimes() const { return gbufferTimes_; }
+  // The light's transforms every technique renders with (fitted, scene/light_fit.h).
+  const LightTransforms& light() const { return light_; }
   std::size_t triangleCount() const { return geometry_.triangleCount(); }
   // G-buffer readback, top-down: xyz world position, w coverage.
   const ImageF& positions() const { return positions_; }
@@ -96,6 +99,7 @@ class FrameRunner {
 
   const Scene& scene_;
   RenderSettings settings_;
+  LightTransforms light_;
   GpuScene geometry_;
   GBuffer gbuffer_;
   PassTimes gbufferTimes_;

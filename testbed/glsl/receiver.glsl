@@ -27,10 +27,25 @@ vec3 towardsLight(vec3 position) {
 
 bool facesAwayFromLight(Receiver r) { return dot(r.normal, towardsLight(r.position)) <= 0.0; }
 
+// The one convention for receivers outside the light's frustum, on any of its six sides
+// (beside the map, in front of the near plane, beyond the far plane) or behind a spot
+// light: they are in shadow, in every technique and in the ground truths alike. lightSpace()
+// sends all of them to kOutsideLight, beyond the map's border (depth 0: every shadow-map
+// lookup there reads shadow) and beyond the far plane, so a technique that only looks up
+// the map follows the convention without a test of its own; one whose map cannot say so
+// (clamped moments, silhouette points) asks insideLightFrustum(). The CPU twin is
+// insideLightFrustum() in scene/view.h (the ray caster's).
+const vec3 kOutsideLight = vec3(-1.0, -1.0, 2.0);
+
+bool insideLightFrustum(vec3 light) {
+  return all(greaterThanEqual(light, vec3(0.0))) && all(lessThanEqual(light, vec3(1.0)));
+}
+
 // Shadow-map coordinates: xy in [0,1] across the map, z the light depth in [0,1] as the
-// depth buffer stores it. Points behind a spot light get xy outside the map (→ shadow).
+// depth buffer stores it; kOutsideLight outside the light's frustum.
 vec3 lightSpace(vec3 position) {
   vec4 clip = uLightViewProjection * vec4(position, 1.0);
-  if (clip.w <= 0.0) return vec3(-1.0, -1.0, 1.0);
-  return clip.xyz / clip.w * 0.5 + 0.5;
+  if (!(clip.w > 0.0)) return kOutsideLight;
+  vec3 light = clip.xyz / clip.w * 0.5 + 0.5;
+  return insideLightFrustum(light) ? light : kOutsideLight;
 }

@@ -1,6 +1,11 @@
 #include "testbed/render/shadow_map_pass.h"
 
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
 #include "testbed/core/error.h"
+#include "testbed/scene/light_fit.h"
 #include "testbed/technique/technique.h"
 
 namespace testbed {
@@ -70,6 +75,35 @@ void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
   program_.set("uLightViewProjection", in.light.viewProjection());
   in.geometry.draw();
   glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+nlohmann::json lightSetupRecord(const LightTransforms& light, int shadowMapSize, DepthFormat format,
+                                const nlohmann::json& params) {
+  const int bits = format == DepthFormat::D16 ? 16 : 24;
+  auto texel = [&](double depth) {
+    const double half = light.orthographic ? light.extent : depth * std::tan(glm::radians(double(light.fovDegrees)) / 2);
+    return 2 * half / shadowMapSize;
+  };
+  auto atPlanes = [&](auto&& f) { return nlohmann::json::array({f(light.nearPlane), f(light.farPlane)}); };
+  nlohmann::json record = {
+      {"type", light.orthographic ? "directional" : "spot"},
+      {"eye", {light.position.x, light.position.y, light.position.z}},
+      {"near", light.nearPlane},
+      {"far", light.farPlane},
+      {"fitted", light.fitted},
+      {"depth_step_world", atPlanes([&](double d) { return depthStepWorld(light, bits, d); })},
+      {"texel_world", atPlanes(texel)},
+  };
+  if (light.orthographic)
+    record["extent"] = light.extent;
+  else
+    record["fov"] = light.fovDegrees;
+  if (params.contains("offset_units") && params.contains("offset_factor")) {
+    const double units = params["offset_units"].get<double>(), factor = params["offset_factor"].get<double>();
+    record["offset_world"] =
+        atPlanes([&](double d) { return units * depthStepWorld(light, bits, d) + factor * texel(d); });
+  }
+  return record;
 }
 
 void bindShadowMap(const Program& program, const Texture& shadowMap) {

@@ -1,8 +1,12 @@
 #pragma once
 // The depth-only shadow map shared by techniques: nearest filtering, clamp to border with
 // border depth 0 so lookups outside the light's frustum read as shadow (the papers'
-// convention), polygon offset while rendering (default factor 4, units 20).
+// convention), polygon offset while rendering (default factor 4, units 20, the papers').
+// The offset counts depth-buffer steps, so its world size follows the light's depth range,
+// which the harness fits to the scene (scene/light_fit.h); every record states it.
 #include <vector>
+
+#include <nlohmann/json_fwd.hpp>
 
 #include "testbed/gl/objects.h"
 #include "testbed/gl/pass_timer.h"
@@ -33,6 +37,13 @@ class ShadowMapPass {
   Framebuffer framebuffer_;
   Program program_;
 };
+
+// The record's "light" block: the transforms used (eye, near, far, fov or extent, fitted)
+// and what they amount to in world units along the light's rays at the near and far
+// plane: one depth step, one shadow-map texel and, for a technique with the polygon
+// offset, the offset for a surface at 45° to the light (units·step + factor·texel).
+nlohmann::json lightSetupRecord(const LightTransforms& light, int shadowMapSize, DepthFormat format,
+                                const nlohmann::json& params);
 
 // Uniforms and binding of glsl/shadow_test.glsl: the shadow map on texture unit 2.
 void bindShadowMap(const Program& program, const Texture& shadowMap);

@@ -29,12 +29,15 @@ struct LightDesc {
   glm::vec3 eye{0, 10, 0};
   glm::vec3 target{0, 0, 0};
   float fovDegrees = 45.0f;
-  float nearPlane = 1.0f;
+  float nearPlane = 1.0f;  // with `fit`: limits of the fitted range
   float farPlane = 1000.0f;
   // Directional: orthographic shadow map along `direction` (light travel direction),
-  // covering the cube of half size `extent` centred on `target`.
+  // covering the square of half size `extent` centred on `target` (0: fitted to the scene).
   glm::vec3 direction{0, -1, 0};
   float extent = 10.0f;
+  // Fit the depth range (spot: within [nearPlane, farPlane]; directional: all geometry in
+  // the footprint, and the extent when it is 0) to the scene's geometry (light_fit.h).
+  bool fit = true;
   // Only the area-light reference uses the radius (disk around the light position).
   float radius = 0.0f;
 };

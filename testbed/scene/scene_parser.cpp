@@ -22,6 +22,7 @@
 #include "testbed/core/error.h"
 #include "testbed/scene/primitives.h"
 #include "testbed/scene/scene.h"
+#include "testbed/scene/view.h"
 
 namespace testbed {
 namespace {
@@ -227,8 +228,12 @@ class Parser {
     requireObject(value, key);
     LightDesc light;
     const json& type = require(value, key, "type");
+    if (const json* fit = find(value, "fit")) {
+      if (!fit->is_boolean()) fail(key / "fit", "expected true or false, got " + show(*fit));
+      light.fit = fit->get<bool>();
+    }
     if (type == "spot") {
-      checkKeys(value, key, {"type", "eye", "target", "fov", "near", "far", "radius"});
+      checkKeys(value, key, {"type", "eye", "target", "fov", "near", "far", "radius", "fit"});
       light.type = LightType::Spot;
       light.eye = vec3(require(value, key, "eye"), key / "eye");
       light.target = vec3(require(value, key, "target"), key / "target");
@@ -236,19 +241,56 @@ class Parser {
       light.fovDegrees = optional(value, key, "fov", 45.0, 0.0, 180.0);
       nearFar(value, key, light.nearPlane, light.farPlane);
     } else if (type == "directional") {
-      checkKeys(value, key, {"type", "direction", "target", "extent", "radius"});
+      checkKeys(value, key, {"type", "direction", "target", "extent", "radius", "fit"});
       light.type = LightType::Directional;
       const glm::vec3 direction = vec3(require(value, key, "direction"), key / "direction");
-      if (glm::length(direction) == 0.0f) fail(key / "direction", "must be a non-zero vector");
+      if (!(glm::length(direction) > 0.0f)) fail(key / "direction", "must be a non-zero vector");
       light.direction = glm::normalize(direction);
       light.target = glm::vec3(0.0f);
       if (const json* target = find(value, "target")) light.target = vec3(*target, key / "target");
-      light.extent = positive(require(value, key, "extent"), key / "extent");
+      // Without an extent the square is fitted to the scene, which needs fitting on.
+      light.extent = 0.0f;
+      if (const json* extent = find(value, "extent"))
+        light.extent = positive(*extent, key / "extent");
+      else if (!light.fit)
+        fail(key / "extent", "missing required key (needed when light.fit is false)");
     } else {
       fail(key / "type", "expected \"spot\" or \"directional\", got " + show(type));
     }
     light.radius = optional(value, key, "radius", 0.0, 0.0, kInf, false);
+    checkLightTransforms(light, key);
     return light;
+  }
+
+  // The light's values as given must make a usable shadow-map transform in float, the
+  // precision the GPU works in: a finite view (eye and target far enough apart for a unit
+  // direction) and a finite, invertible projection whose scale factors are normal floats
+  // (far 1e38 overflows 2·far·near; fov 1e-38 or extent 1e38 underflow the scale).
+  void checkLightTransforms(LightDesc light, const Key& key) const {
+    const bool spot = light.type == LightType::Spot;
+    if (!spot && light.extent == 0.0f) light.extent = 1.0f;  // fitted later: check the rest
+    const LightTransforms t = lightTransforms(light);
+    auto finite = [](const glm::mat4& m) {
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+          if (!std::isfinite(m[c][r])) return false;
+      return true;
+    };
+    auto normal = [](float x) { return std::isnormal(x); };
+    if (spot && (!finite(t.view) || !std::isfinite(glm::length(t.direction))))
+      fail(key / "target", "too close to light.eye: the light's view direction is not a finite unit vector");
+    const glm::mat4& p = t.projection;
+    const bool scales = normal(p[0][0]) && normal(p[1][1]) && normal(p[2][2]);
+    const glm::mat4 inverse = glm::inverse(t.viewProjection());
+    if (finite(t.view) && finite(p) && scales && finite(inverse)) return;
+    if (!spot)
+      fail(key / "extent", "too large: the light's orthographic projection is not finite and invertible in float, got " +
+                               show(light.extent));
+    if (!normal(p[0][0]) || !normal(p[1][1]))
+      fail(key / "fov", "too small or too close to 180: the light's projection is not finite, got " +
+                            show(light.fovDegrees));
+    fail(key / "far", "with near " + show(light.nearPlane) + " the light's projection is not finite and invertible in float, got " +
+                          show(light.farPlane));
   }
 
   fs::path resolveMesh(const std::string& name, const Key& key) const {

@@ -394,7 +394,7 @@ TEST_F(SceneParser, CameraAndLightGeometry) {
       "light.direction", "non-zero");
   expectBad(
       [](json& s) {
-        s["light"] = {{"type", "directional"}, {"direction", {0, -1, 0}}};
+        s["light"] = {{"type", "directional"}, {"direction", {0, -1, 0}}, {"fit", false}};
       },
       "light.extent", "missing required key");
 }

@@ -21,28 +21,39 @@ ViewProjection cameraTransforms(const CameraDesc& camera, float aspect) {
 }
 
 LightTransforms lightTransforms(const LightDesc& light) {
+  if (light.type == LightType::Spot) return lightTransforms(light, light.nearPlane, light.farPlane, 0.0f);
+  return lightTransforms(light, -light.extent, light.extent, light.extent);
+}
+
+LightTransforms lightTransforms(const LightDesc& light, float nearPlane, float farPlane, float extent) {
   LightTransforms t;
   if (light.type == LightType::Spot) {
     t.position = light.eye;
     t.direction = glm::normalize(light.target - light.eye);
-    t.nearPlane = light.nearPlane;
-    t.farPlane = light.farPlane;
+    t.nearPlane = nearPlane;
+    t.farPlane = farPlane;
+    t.fovDegrees = light.fovDegrees;
     t.view = glm::lookAt(light.eye, light.target, stableUp(t.direction));
-    t.projection = glm::perspective(glm::radians(light.fovDegrees), 1.0f, light.nearPlane, light.farPlane);
+    t.projection = glm::perspective(glm::radians(light.fovDegrees), 1.0f, nearPlane, farPlane);
   } else {
-    // The eye sits `extent` behind the target, so the depth range [0, 2·extent] covers
-    // the cube of half size `extent` around the target.
+    // The eye sits on the near plane, so the depth range is [0, far − near] from it.
     t.orthographic = true;
     t.direction = glm::normalize(light.direction);
-    const glm::vec3 eye = light.target - t.direction * light.extent;
-    t.position = eye;
+    t.position = light.target + t.direction * nearPlane;
     t.nearPlane = 0.0f;
-    t.farPlane = 2.0f * light.extent;
-    t.view = glm::lookAt(eye, light.target, stableUp(t.direction));
-    t.projection = glm::ortho(-light.extent, light.extent, -light.extent, light.extent,
-                              t.nearPlane, t.farPlane);
+    t.farPlane = farPlane - nearPlane;
+    t.extent = extent;
+    t.view = glm::lookAt(t.position, t.position + t.direction, stableUp(t.direction));
+    t.projection = glm::ortho(-extent, extent, -extent, extent, t.nearPlane, t.farPlane);
   }
   return t;
+}
+
+bool insideLightFrustum(const LightTransforms& light, const glm::vec3& world) {
+  const glm::vec4 clip = light.viewProjection() * glm::vec4(world, 1.0f);
+  if (!(clip.w > 0.0f)) return false;  // behind a spot light (or on its eye plane)
+  const glm::vec3 p = glm::vec3(clip) / clip.w * 0.5f + 0.5f;
+  return p.x >= 0.0f && p.y >= 0.0f && p.z >= 0.0f && p.x <= 1.0f && p.y <= 1.0f && p.z <= 1.0f;
 }
 
 }  // namespace testbed

@@ -17,12 +17,27 @@ ViewProjection cameraTransforms(const CameraDesc& camera, float aspect);
 
 struct LightTransforms : ViewProjection {
   bool orthographic = false;
-  glm::vec3 position{0};   // spot: the light's eye; directional: unused
+  glm::vec3 position{0};   // spot: the light's eye; directional: the orthographic eye
   glm::vec3 direction{0};  // unit vector the light travels along (spot: eye → target)
-  float nearPlane = 1, farPlane = 1000;
+  float nearPlane = 1, farPlane = 1000;  // view depths along `direction` from `position`
+  float fovDegrees = 0;                  // spot: the square frustum's full angle
+  float extent = 0;                      // directional: half size of the square footprint
+  bool fitted = false;                   // the depth range (and extent) fitted to the scene
 };
 
+// The light's transforms from its description as given: a spot's near/far, a directional
+// light's cube of half size `extent` around its target (depth range [0, 2·extent]). The
+// harness uses fittedLightTransforms() (light_fit.h), which calls this when fitting is off.
 LightTransforms lightTransforms(const LightDesc& light);
+// The same with an explicit depth range; directional: depths from the plane through
+// `light.target`, so the eye sits at target + nearPlane·direction and near becomes 0.
+LightTransforms lightTransforms(const LightDesc& light, float nearPlane, float farPlane, float extent);
+
+// The one convention for receivers outside the light's frustum, on any of its six sides or
+// behind a spot light: they are in shadow, in every technique and every ground truth. This
+// is the CPU twin of lightSpace()/insideLightFrustum() in glsl/receiver.glsl (same float
+// operations, same order), for the ray caster and the tests.
+bool insideLightFrustum(const LightTransforms& light, const glm::vec3& world);
 
 // An up vector that is not parallel to `forward`, for lookAt.
 glm::vec3 stableUp(const glm::vec3& forward, const glm::vec3& preferred = {0, 1, 0});
