@@ -34,6 +34,7 @@ struct HardCase {
   bool mesh;               // the dragon on the floor (else boxes)
   bool steep;              // light ≥ 10° above the receivers: boundary_px.mean asserted
   double overestimation = 0.05;  // sm's bound (see the dragon under a 10° sun)
+  bool everyTechnique = true;    // false where the fitted set-up equals another case's
 };
 
 void PrintTo(const HardCase& c, std::ostream* out) { *out << c.name; }
@@ -102,7 +103,7 @@ TEST_P(LightSetupHardCases, ShadowMapSetUpDoesNotLeak) {
     EXPECT_LE(sm.leakPct, 0.05);
     EXPECT_LE(sm.overestimationPct, c.overestimation);
     if (c.steep) EXPECT_LE(sm.boundaryMean, 1.0);
-    if (format != DepthFormat::D16) continue;
+    if (format != DepthFormat::D16 || !c.everyTechnique) continue;
     for (const auto& technique : registeredTechniques()) {
       const std::string id = technique.info->id;
       if (id == "sm") continue;
@@ -118,7 +119,8 @@ INSTANTIATE_TEST_SUITE_P(
     Grid, LightSetupHardCases,
     ::testing::Values(HardCase{"spot-papers-dragon", spotLight(1, 1000), true, true},
                       HardCase{"spot-careless-boxes", spotLight(0.01, 1e5), false, true},
-                      HardCase{"spot-near10-dragon", spotLight(10, 1e5), true, true},
+                      // Fitted, near 10 / far 1e5 renders what near 1 / far 1000 does: sm only.
+                      HardCase{"spot-near10-dragon", spotLight(10, 1e5), true, true, 0.05, false},
                       HardCase{"sun-10deg-small-extent", sun(10, 30), false, true},
                       HardCase{"sun-2deg-small-extent", sun(2, 30), false, false},
                       // The one exception: at 24 and 32f bits the offset's 20 steps are ~1e-4
