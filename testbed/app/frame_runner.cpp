@@ -57,10 +57,14 @@ void validateSettings(const RenderSettings& s) {
 
 FrameRunner::FrameRunner(const Scene& scene, const RenderSettings& settings)
     : scene_(scene), settings_(settings), geometry_(scene), gbuffer_(settings.size) {
+  renderGBuffer();
+}
+
+void FrameRunner::renderGBuffer() {
   PassTimer timer;
   {
     auto scope = timer.scope("gbuffer");
-    gbuffer_.render(geometry_, cameraTransforms(scene.camera, aspectOf(settings.size)));
+    gbuffer_.render(geometry_, cameraTransforms(scene_.camera, aspectOf(settings_.size)));
   }
   gbufferTimes_ = timer.resolve();
   checkGlError("rendering the G-buffer");

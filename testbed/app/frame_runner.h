@@ -75,13 +75,18 @@ class TechniqueSession {
 
 class FrameRunner {
  public:
-  // Needs a current GL context.
+  // Needs a current GL context. The scene is read by reference on every frame, so its
+  // light may change between frames; after its camera changes, call renderGBuffer().
   FrameRunner(const Scene& scene, const RenderSettings& settings);
   ~FrameRunner();
 
   TechniqueRun run(const RegisteredTechnique& technique, const ParameterSet& parameters);
   // Shaded image for people: Lambert × visibility plus ambient, RGB.
   ImageF shade(const ImageF& visibility) const;
+
+  // Renders and reads back the G-buffer from the scene's current camera (the constructor
+  // does it once; the viewer again whenever the camera moves).
+  void renderGBuffer();
 
   const Scene& scene() const { return scene_; }
   const RenderSettings& settings() const { return settings_; }
