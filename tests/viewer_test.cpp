@@ -84,20 +84,20 @@ std::string quote(const std::string& text) {
   return quoted + "'";
 }
 
-struct Run {
+struct Outcome {
   int exitCode = -1;
   std::string err;
 };
 
 // Runs the testbed binary with `display` as DISPLAY (empty: none at all).
-Run testbed(const std::vector<std::string>& args, const std::string& display = {}) {
+Outcome testbed(const std::vector<std::string>& args, const std::string& display = {}) {
   const fs::path errFile = fs::temp_directory_path() / ("viewer-test-" + std::to_string(::getpid()) + ".err");
   std::string command = display.empty() ? "env -u DISPLAY" : "env DISPLAY=" + quote(display);
   command += " timeout -k 5 180 " + quote(TESTBED_BINARY);
   for (const auto& a : args) command += " " + quote(a);
   command += " >/dev/null 2>" + quote(errFile.string());
   const int status = std::system(command.c_str());
-  Run run;
+  Outcome run;
   run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   std::ifstream in(errFile);
   std::ostringstream text;
@@ -147,12 +147,12 @@ class ViewerTest : public ::testing::Test {
     if (!dir_.empty()) fs::remove_all(dir_);
   }
 
-  Run view(const std::vector<std::string>& args) { return testbed(with({"view"}, args), xvfb_->display()); }
+  Outcome view(const std::vector<std::string>& args) { return testbed(with({"view"}, args), xvfb_->display()); }
 
   // `render` (default backend, osmesa) of `id` on `sceneFile`; returns its T.png.
   testbed::ImageF render(const fs::path& sceneFile, const std::string& id, const std::vector<std::string>& extra = {}) {
     const fs::path out = dir_ / ("render-" + std::to_string(renders_++));
-    const Run run = testbed(with(with({"render", "--scene", sceneFile.string(), "--technique", id, "--out", out.string()},
+    const Outcome run = testbed(with(with({"render", "--scene", sceneFile.string(), "--technique", id, "--out", out.string()},
                                       kCommon),
                                  extra));
     EXPECT_EQ(run.exitCode, 0) << run.err;
@@ -173,7 +173,7 @@ class ViewerTest : public ::testing::Test {
 TEST_F(ViewerTest, FramesScreenshotEqualsRenderForAHardAndAFilteredTechnique) {
   for (const auto& [id, set] : std::vector<std::pair<std::string, std::string>>{{"sm", "bias=0"}, {"pcf", "kernel=5"}}) {
     const fs::path shot = dir_ / (id + "-view.png");
-    const Run run = view(with({"--scene", scene("wall.json").string(), "--technique", id, "--set", set, "--frames", "3",
+    const Outcome run = view(with({"--scene", scene("wall.json").string(), "--technique", id, "--set", set, "--frames", "3",
                                "--screenshot", shot.string()},
                               kCommon));
     ASSERT_EQ(run.exitCode, 0) << run.err;
@@ -190,10 +190,10 @@ TEST_F(ViewerTest, ScriptVisitingEveryTechniqueGivesCompareImages) {
   for (const auto& t : testbed::registeredTechniques())
     script += "technique " + t.info->id + "\nscreenshot " + (dir_ / ("view-" + t.info->id + ".png")).string() + "\n";
   script += "quit\n";
-  const Run run = view(with({"--scene", scene("wall.json").string(), "--script", writeScript(script).string()}, kCommon));
+  const Outcome run = view(with({"--scene", scene("wall.json").string(), "--script", writeScript(script).string()}, kCommon));
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const fs::path out = dir_ / "compare";
-  const Run compare = testbed(with({"compare", "--scene", scene("wall.json").string(), "--out", out.string()}, kCommon));
+  const Outcome compare = testbed(with({"compare", "--scene", scene("wall.json").string(), "--out", out.string()}, kCommon));
   ASSERT_EQ(compare.exitCode, 0) << compare.err;
   for (const auto& t : testbed::registeredTechniques()) {
     const std::string& id = t.info->id;
@@ -206,7 +206,7 @@ TEST_F(ViewerTest, ScriptVisitingEveryTechniqueGivesCompareImages) {
 // Switching technique and parameters by script gives what `render --set` gives.
 TEST_F(ViewerTest, ScriptSwitchingTechniqueAndParameterMatchesRender) {
   const fs::path a = dir_ / "a.png", b = dir_ / "b.png", c = dir_ / "c.png";
-  const Run run = view(with({"--scene", scene("wall.json").string(), "--script",
+  const Outcome run = view(with({"--scene", scene("wall.json").string(), "--script",
                              writeScript("technique pcf\nset kernel=7\nset bilinear=true\nscreenshot " + a.string() +
                                          "\ntechnique evsm\nset moments=2\nframes 2\nscreenshot " + b.string() +
                                          "\ntechnique smsr\nset max_search=4\nscreenshot " + c.string() + "\nquit\n")
@@ -223,7 +223,7 @@ TEST_F(ViewerTest, ScriptSwitchingTechniqueAndParameterMatchesRender) {
 // Moving camera and light, then saving the scene: `render` of the saved scene is the view.
 TEST_F(ViewerTest, SavedSceneRendersWhatTheMovedViewShows) {
   const fs::path shot = dir_ / "moved.png", saved = dir_ / "saved" / "moved.json";
-  const Run run = view(with({"--scene", scene("wall.json").string(), "--script",
+  const Outcome run = view(with({"--scene", scene("wall.json").string(), "--script",
                              writeScript("orbit 25 10\nzoom 0.8\npan 10 -5\nlight 30 -5\nsave-scene " + saved.string() +
                                          "\nscreenshot " + shot.string() + "\nquit\n")
                                  .string()},
@@ -238,7 +238,7 @@ TEST_F(ViewerTest, SavedSceneRendersWhatTheMovedViewShows) {
 // pure red/blue pixels are exactly the mismatched receivers.
 TEST_F(ViewerTest, ErrorModeAndMetricsAgreeWithCompare) {
   const fs::path heat = dir_ / "heat.png", metrics = dir_ / "metrics.json";
-  const Run run = view(with({"--scene", scene("wall.json").string(), "--technique", "sm", "--script",
+  const Outcome run = view(with({"--scene", scene("wall.json").string(), "--technique", "sm", "--script",
                              writeScript("mode error\nscreenshot " + heat.string() + "\nmetrics " + metrics.string() +
                                          "\nquit\n")
                                  .string()},
@@ -273,7 +273,7 @@ TEST_F(ViewerTest, ErrorModeAndMetricsAgreeWithCompare) {
 // The window: the panel at the left, the 3D view beside it showing the screenshot's bytes.
 TEST_F(ViewerTest, WindowScreenshotShowsThePanelBesideTheExactView) {
   const fs::path shot = dir_ / "view.png", window = dir_ / "window.png";
-  const Run run = view(with({"--scene", scene("wall.json").string(), "--technique", "smsr", "--frames", "4",
+  const Outcome run = view(with({"--scene", scene("wall.json").string(), "--technique", "smsr", "--frames", "4",
                              "--screenshot", shot.string(), "--window-screenshot", window.string()},
                             kCommon));
   ASSERT_EQ(run.exitCode, 0) << run.err;
@@ -293,9 +293,22 @@ TEST_F(ViewerTest, WindowScreenshotShowsThePanelBesideTheExactView) {
   EXPECT_GT(panelColours, 3);
 }
 
+// `render --backend glfw` (a hidden window) runs the same rasterizer as OSMesa: same T.png.
+TEST_F(ViewerTest, RenderOnTheGlfwBackendEqualsOsmesa) {
+  const fs::path out = dir_ / "glfw";
+  const Outcome run = testbed(with({"render", "--scene", scene("wall.json").string(), "--technique", "pcf", "--backend",
+                                    "glfw", "--out", out.string()},
+                                   kCommon),
+                              xvfb_->display());
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  std::ifstream record(out / "pcf.json");
+  EXPECT_EQ(json::parse(record)["backend"].get<std::string>().rfind("glfw: ", 0), 0u);
+  EXPECT_EQ(maxStepDifference(testbed::readImage(out / "pcf.png"), render(scene("wall.json"), "pcf")), 0);
+}
+
 TEST_F(ViewerTest, PluginTechniquesAreShownLikeInTreeOnes) {
   const fs::path shot = dir_ / "plugin.png";
-  const Run run = view(with({"--scene", scene("wall.json").string(), "--plugin", TESTBED_PLUGIN_EXAMPLE, "--technique",
+  const Outcome run = view(with({"--scene", scene("wall.json").string(), "--plugin", TESTBED_PLUGIN_EXAMPLE, "--technique",
                              "example-sm", "--frames", "2", "--screenshot", shot.string()},
                             kCommon));
   ASSERT_EQ(run.exitCode, 0) << run.err;
@@ -328,7 +341,7 @@ TEST(ViewerBadInput, ExitsTwoWithOneLineBeforeAnyWindow) {
       {{"--scene", wall, "--size", "12x"}, "--size"},
   };
   for (const auto& c : cases) {
-    const Run run = testbed(with({"view"}, c.args));
+    const Outcome run = testbed(with({"view"}, c.args));
     EXPECT_EQ(run.exitCode, 2) << c.expected << "\n" << run.err;
     EXPECT_NE(run.err.find(c.expected), std::string::npos) << run.err;
     EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;

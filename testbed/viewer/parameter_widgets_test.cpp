@@ -99,6 +99,7 @@ TEST(ViewerParameterWidgets, PanelDrawsThemInAnImGuiFrame) {
   io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
   for (const auto& t : registeredTechniques()) {
     ImGui::NewFrame();
+    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 600));  // no auto-fit: drawn on its first frame
     ImGui::Begin("panel");
     std::map<std::string, ParameterValue, std::less<>> values;
     for (const auto& s : t.info->parameters) values[s.name] = s.defaultValue;
