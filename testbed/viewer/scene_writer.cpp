@@ -62,11 +62,13 @@ void saveSceneWithView(const Scene& scene, const fs::path& destination) {
     throw InputError(scene.file.string() + ": cannot read it back to save the view: " + error.what());
   }
   const json written = sceneWithView(document, scene.file, destination, scene.camera, scene.light);
-  parseScene(nlohmann::json::parse(written.dump()), destination);  // the CLI must accept what we write
   fs::path folder = destination.parent_path();
   if (folder.empty()) folder = ".";
   OutputFiles files(folder);
-  files.writeText(destination.filename().string(), written.dump(2) + "\n");
+  files.writeText(destination.filename().string(), written.dump(2) + "\n");  // creates the folder
+  // The CLI must accept what we write: parsed from where it lands (relative mesh paths
+  // resolve through that folder); an error leaves nothing behind.
+  parseScene(nlohmann::json::parse(written.dump()), destination);
   files.commit();
 }
 

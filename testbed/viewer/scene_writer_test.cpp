@@ -14,7 +14,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class SceneWriterTest : public ::testing::Test {
+class ViewerSceneWriter : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() / ("testbed-scene-writer-" + std::to_string(::getpid()));
@@ -34,7 +34,7 @@ class SceneWriterTest : public ::testing::Test {
 
 // What the button writes loads back, through the CLI's parser, with the moved camera and
 // light exactly and everything else as it was, even from another folder.
-TEST_F(SceneWriterTest, SavedSceneLoadsBackWithTheMovedView) {
+TEST_F(ViewerSceneWriter, SavedSceneLoadsBackWithTheMovedView) {
   Scene scene = loadScene(dir_ / "scenes" / "s.json");
   orbit(scene.camera, 33, 12);
   zoom(scene.camera, 0.7f);
@@ -57,7 +57,7 @@ TEST_F(SceneWriterTest, SavedSceneLoadsBackWithTheMovedView) {
   EXPECT_EQ(document["objects"][0]["mesh"], "../../scenes/meshes/tet.off");
 }
 
-TEST_F(SceneWriterTest, DirectionalLightKeepsItsType) {
+TEST_F(ViewerSceneWriter, DirectionalLightKeepsItsType) {
   LightDesc sun;
   sun.type = LightType::Directional;
   sun.target = {1, 2, 3};
