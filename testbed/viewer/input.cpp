@@ -28,7 +28,8 @@ InputResult Input::poll(GLFWwindow* window, const Rect& view, CameraDesc& camera
   const ImGuiIO& io = ImGui::GetIO();
   const bool anyButton = io.MouseDown[0] || io.MouseDown[1] || io.MouseDown[2];
   if (!anyButton) dragging_ = false;
-  const bool overView = view.contains(glm::vec2(io.MousePos.x, io.MousePos.y)) && !io.WantCaptureMouse;
+  const glm::vec2 scale(io.DisplayFramebufferScale.x, io.DisplayFramebufferScale.y);  // `view` is in framebuffer pixels
+  const bool overView = view.contains(glm::vec2(io.MousePos.x, io.MousePos.y) * scale) && !io.WantCaptureMouse;
   if (anyButton && overView && (io.MouseClicked[0] || io.MouseClicked[1] || io.MouseClicked[2])) dragging_ = true;
 
   const glm::vec2 delta(io.MouseDelta.x, io.MouseDelta.y);
@@ -40,7 +41,7 @@ InputResult Input::poll(GLFWwindow* window, const Rect& view, CameraDesc& camera
       orbit(camera, -delta.x * kDegreesPerPixel, delta.y * kDegreesPerPixel);
       result.cameraMoved = true;
     } else {
-      pan(camera, delta, float(view.size.y));
+      pan(camera, delta * scale, float(view.size.y));
       result.cameraMoved = true;
     }
   }

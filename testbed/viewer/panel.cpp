@@ -88,10 +88,10 @@ Panel::Panel(std::string saveScenePath) {
   std::snprintf(savePath_, sizeof savePath_, "%s", saveScenePath.c_str());
 }
 
-PanelRequests Panel::draw(LiveView& view, glm::ivec2 framebuffer) {
+PanelRequests Panel::draw(LiveView& view) {
   PanelRequests requests;
   ImGui::SetNextWindowPos(ImVec2(0, 0));
-  ImGui::SetNextWindowSize(ImVec2(kPanelWidth, float(framebuffer.y)));
+  ImGui::SetNextWindowSize(ImVec2(kPanelWidth, ImGui::GetIO().DisplaySize.y));
   ImGui::Begin("testbed view", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   ImGui::PushItemWidth(-170);

@@ -24,7 +24,7 @@ class Panel {
  public:
   explicit Panel(std::string saveScenePath);
   // Draws the panel (between ImGui::NewFrame and ImGui::Render) and applies its edits to `view`.
-  PanelRequests draw(LiveView& view, glm::ivec2 framebuffer);
+  PanelRequests draw(LiveView& view);
   // A line shown at the panel's top (last screenshot written, an error, ...).
   void setStatus(std::string status) { status_ = std::move(status); }
 

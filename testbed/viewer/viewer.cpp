@@ -85,11 +85,13 @@ class Viewer {
     ImGui::NewFrame();
     glm::ivec2 framebuffer;
     glfwGetFramebufferSize(window_, &framebuffer.x, &framebuffer.y);
-    const Rect viewArea{{int(kPanelWidth), 0}, glm::max(framebuffer - glm::ivec2(int(kPanelWidth), 0), glm::ivec2(1))};
+    // ImGui lays out in window units; on a HiDPI screen the framebuffer has more pixels.
+    const int panel = int(kPanelWidth * ImGui::GetIO().DisplayFramebufferScale.x);
+    const Rect viewArea{{panel, 0}, glm::max(framebuffer - glm::ivec2(panel, 0), glm::ivec2(1))};
     const Rect imageRect = placeImage(options_.settings.size, viewArea);
 
     handle(input_.poll(window_, imageRect, options_.scene.camera, options_.scene.light, flySpeed_));
-    handle(panel_.draw(live_, framebuffer));
+    handle(panel_.draw(live_));
     bool windowShot = false;
     if (next_ < options_.script.size()) windowShot = scriptStep();
 
