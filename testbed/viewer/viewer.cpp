@@ -72,6 +72,8 @@ class Viewer {
     ImGuiSession imgui(window_);
     const bool scripted = !options_.script.empty() || options_.frames;
     glfwSwapInterval(scripted ? 0 : 1);
+    // A key pressed and released between two (slow, llvmpipe) frames still counts once.
+    glfwSetInputMode(window_, GLFW_STICKY_KEYS, GLFW_TRUE);
     live_.renderFrame();
     while (!stop_ && !glfwWindowShouldClose(window_)) frame();
     return 0;
