@@ -134,19 +134,21 @@ void Panel::techniqueSection(LiveView& view) {
   }
   if (!widgets.empty() && ImGui::Button("defaults")) view.setParameters({});
 
-  static const std::vector<std::string> sizes = {"128", "256", "512", "1024", "2048", "4096", "8192"};
+  // Powers of two, plus the size given on the command line when it is none of them.
+  std::vector<std::string> sizes = {"128", "256", "512", "1024", "2048", "4096", "8192"};
   static const std::vector<std::string> formats = {"16", "24", "32f"};
-  std::size_t sizeIndex = sizes.size(), formatIndex = 0;
+  const std::string currentSize = std::to_string(view.settings().shadowMapSize);
+  if (std::find(sizes.begin(), sizes.end(), currentSize) == sizes.end()) sizes.push_back(currentSize);
+  std::size_t sizeIndex = 0, formatIndex = 0;
   for (std::size_t i = 0; i < sizes.size(); ++i)
-    if (sizes[i] == std::to_string(view.settings().shadowMapSize)) sizeIndex = i;
+    if (sizes[i] == currentSize) sizeIndex = i;
   for (std::size_t i = 0; i < formats.size(); ++i)
     if (formats[i] == depthFormatName(view.settings().depthFormat)) formatIndex = i;
   const bool sizeChanged = combo("shadow map", sizes, sizeIndex);
   const bool formatChanged = combo("depth format", formats, formatIndex);
   if (sizeChanged || formatChanged) {
     try {
-      view.setShadowMap(sizeIndex < sizes.size() ? std::stoi(sizes[sizeIndex]) : view.settings().shadowMapSize,
-                        parseDepthFormat(formats[formatIndex]));
+      view.setShadowMap(std::stoi(sizes[sizeIndex]), parseDepthFormat(formats[formatIndex]));
     } catch (const InputError& error) {
       status_ = error.what();
     }
