@@ -15,6 +15,7 @@ packages=(
   python3-glad libglm-dev libopenmesh-dev libopenimageio-dev openimageio-tools
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   libembree-dev libcgal-demo assimp-testmodels fonts-dejavu-core
+  libimgui-dev libglx-mesa0 libgl1-mesa-dri xvfb
 )
 
 log() { echo "setup: $*" >&2; }

@@ -41,6 +41,10 @@ CommandRunner addListCommand(CLI::App& app);
 CommandRunner addRenderCommand(CLI::App& app);
 CommandRunner addGroundTruthCommand(CLI::App& app);
 CommandRunner addCompareCommand(CLI::App& app);
+#ifdef TESTBED_WITH_VIEWER
+// `view`: the interactive viewer (README "Viewer").
+CommandRunner addViewCommand(CLI::App& app);
+#endif
 // `check`: exit 0 no regression, 3 regressions found, 2 bad input (README "Regression check").
 CommandRunner addCheckCommand(CLI::App& app);
 

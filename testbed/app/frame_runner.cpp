@@ -59,10 +59,16 @@ void validateSettings(const RenderSettings& s) {
 FrameRunner::FrameRunner(const Scene& scene, const RenderSettings& settings)
     : scene_(scene), settings_(settings), light_(fittedLightTransforms(scene)), geometry_(scene),
       gbuffer_(settings.size) {
+  renderGBuffer();
+}
+
+void FrameRunner::lightMoved() { light_ = fittedLightTransforms(scene_); }
+
+void FrameRunner::renderGBuffer() {
   PassTimer timer;
   {
     auto scope = timer.scope("gbuffer");
-    gbuffer_.render(geometry_, cameraTransforms(scene.camera, aspectOf(settings.size)));
+    gbuffer_.render(geometry_, cameraTransforms(scene_.camera, aspectOf(settings_.size)));
   }
   gbufferTimes_ = timer.resolve();
   checkGlError("rendering the G-buffer");

@@ -76,13 +76,20 @@ class TechniqueSession {
 
 class FrameRunner {
  public:
-  // Needs a current GL context.
+  // Needs a current GL context. The scene is read by reference on every frame: after its
+  // camera changes, call renderGBuffer(); after its light changes, lightMoved().
   FrameRunner(const Scene& scene, const RenderSettings& settings);
   ~FrameRunner();
 
   TechniqueRun run(const RegisteredTechnique& technique, const ParameterSet& parameters);
   // Shaded image for people: Lambert × visibility plus ambient, RGB.
   ImageF shade(const ImageF& visibility) const;
+
+  // Renders and reads back the G-buffer from the scene's current camera (the constructor
+  // does it once; the viewer again whenever the camera moves).
+  void renderGBuffer();
+  // Fits the light's transforms to the scene's current light again (scene/light_fit.h).
+  void lightMoved();
 
   const Scene& scene() const { return scene_; }
   const RenderSettings& settings() const { return settings_; }

@@ -11,11 +11,14 @@
 int main(int argc, char** argv) {
   CLI::App app{"shadow testbed: shadow-mapping techniques measured against exact ground truth"};
   app.require_subcommand(1);
-  const std::vector<testbed::CommandRunner> commands = {testbed::addListCommand(app),
-                                                        testbed::addRenderCommand(app),
-                                                        testbed::addGroundTruthCommand(app),
-                                                        testbed::addCompareCommand(app),
-                                                        testbed::addCheckCommand(app)};
+  std::vector<testbed::CommandRunner> commands = {testbed::addListCommand(app),
+                                                  testbed::addRenderCommand(app),
+                                                  testbed::addGroundTruthCommand(app),
+                                                  testbed::addCompareCommand(app),
+                                                  testbed::addCheckCommand(app)};
+#ifdef TESTBED_WITH_VIEWER
+  commands.push_back(testbed::addViewCommand(app));
+#endif
   // CLI11 would only say "a subcommand is required" for a mistyped one: name it instead.
   if (argc > 1 && argv[1][0] != '-') {
     std::string known;

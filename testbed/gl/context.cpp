@@ -2,6 +2,9 @@
 
 #include "testbed/core/error.h"
 #include "testbed/gl/gl.h"
+#ifdef TESTBED_WITH_VIEWER
+#include "testbed/gl/context_glfw.h"
+#endif
 
 namespace testbed {
 namespace {
@@ -29,17 +32,23 @@ void GlContext::finishSetup(void* (*getProc)(const char*)) {
 }
 
 std::vector<std::string> availableBackends() {
+  std::vector<std::string> names{"osmesa"};
 #ifdef TESTBED_WITH_EGL
-  return {"osmesa", "egl"};
-#else
-  return {"osmesa"};
+  names.push_back("egl");
 #endif
+#ifdef TESTBED_WITH_VIEWER
+  names.push_back("glfw");
+#endif
+  return names;
 }
 
 std::unique_ptr<GlContext> createContext(std::string_view backend) {
   if (backend == "osmesa") return createOsmesaContext();
 #ifdef TESTBED_WITH_EGL
   if (backend == "egl") return createEglContext();
+#endif
+#ifdef TESTBED_WITH_VIEWER
+  if (backend == "glfw") return createGlfwContext({64, 64}, "testbed");
 #endif
   std::string known;
   for (const auto& name : availableBackends()) known += (known.empty() ? "" : ", ") + name;

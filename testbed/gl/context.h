@@ -1,6 +1,7 @@
 #pragma once
-// Headless OpenGL 4.5 core contexts behind one interface, so the same passes run on
-// OSMesa/llvmpipe (default, everywhere) and EGL (real GPUs, or Mesa surfaceless).
+// OpenGL 4.5 core contexts behind one interface, so the same passes run on OSMesa/llvmpipe
+// (default, everywhere), EGL (real GPUs, or Mesa surfaceless) and GLFW (a window, for the
+// viewer; context_glfw.h).
 #include <memory>
 #include <string>
 #include <string_view>
@@ -24,7 +25,7 @@ class GlContext {
   std::string description_;
 };
 
-// The backends compiled into this binary, in order of preference ("osmesa", "egl").
+// The backends compiled into this binary, in order of preference ("osmesa", "egl", "glfw").
 std::vector<std::string> availableBackends();
 
 // Creates and makes current a 4.5 core context. Throws InputError for an unknown backend

@@ -33,11 +33,7 @@ void writeWithFormat(const std::filesystem::path& file, const ImageF& image, con
     ok = out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
   } else {
     std::vector<unsigned char> bytes(image.pixels.size());
-    for (std::size_t i = 0; i < bytes.size(); ++i) {
-      const float v = image.pixels[i];
-      const float clamped = v != v ? 0.0f : (v < 0 ? 0.0f : (v > 1 ? 1.0f : v));
-      bytes[i] = static_cast<unsigned char>(clamped * 255.0f + 0.5f);
-    }
+    for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = quantize8(image.pixels[i]);
     ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
   }
   if (!ok || !out->close()) throw std::runtime_error(file.string() + ": write failed: " + out->geterror());

@@ -14,7 +14,14 @@ struct ImageF {
   float at(int x, int y, int c = 0) const { return pixels[(std::size_t(y) * width + x) * channels + c]; }
 };
 
-// PNG/JPEG: 8-bit with values clamped to [0,1]; EXR: float32. Throws std::runtime_error
+// A [0,1] value as an 8-bit channel the way PNGs are written (NaN → 0, clamped, rounded),
+// so a viewer's window shows exactly the bytes of the file.
+inline unsigned char quantize8(float v) {
+  const float clamped = v != v ? 0.0f : (v < 0 ? 0.0f : (v > 1 ? 1.0f : v));
+  return static_cast<unsigned char>(clamped * 255.0f + 0.5f);
+}
+
+// PNG/JPEG: 8-bit with values clamped to [0,1] (quantize8); EXR: float32. Throws std::runtime_error
 // naming the file on failure.
 void writeImage(const std::filesystem::path& file, const ImageF& image);
 ImageF readImage(const std::filesystem::path& file);

@@ -1,0 +1,29 @@
+#pragma once
+// Mouse and keyboard over the 3D view: left drag orbits, right or middle drag pans, the
+// wheel zooms, WASD/QE fly (shift: 4× faster), ctrl+left drag moves the light; P saves a
+// screenshot, R resets the view, Esc quits. Nothing reaches the view while ImGui wants the
+// mouse or the keyboard (a widget is hovered or being typed into).
+#include "testbed/scene/scene.h"
+#include "testbed/viewer/display.h"
+
+struct GLFWwindow;
+
+namespace testbed::viewer {
+
+struct InputResult {
+  bool cameraMoved = false, lightMoved = false;
+  bool screenshot = false, resetView = false, quit = false;
+};
+
+class Input {
+ public:
+  // `view` is where the 3D view is drawn; `flySpeed` in world units per second.
+  InputResult poll(GLFWwindow* window, const Rect& view, CameraDesc& camera, LightDesc& light, float flySpeed);
+
+ private:
+  bool pressedOnce(GLFWwindow* window, int key);
+  bool dragging_ = false;  // a drag that started over the view keeps going over the panel
+  bool keyWasDown_[512] = {};
+};
+
+}  // namespace testbed::viewer

@@ -1,0 +1,162 @@
+#include "testbed/viewer/live_view.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "groundtruth/shadow_volumes.h"
+#include "testbed/core/error.h"
+
+namespace testbed::viewer {
+namespace {
+
+constexpr std::size_t kHistoryFrames = 240;  // the live plot's width
+
+// Visibility as grey, pixels without a receiver in the heat map's background grey.
+ImageF visibilityImage(const ImageF& visibility) {
+  ImageF image = visibility;
+  for (float& v : image.pixels) v = std::isnan(v) ? kHeatBackground[0] : v;
+  return image;
+}
+
+}  // namespace
+
+const char* displayModeName(DisplayMode mode) {
+  switch (mode) {
+    case DisplayMode::Shaded: return "shaded";
+    case DisplayMode::Visibility: return "visibility";
+    case DisplayMode::Error: return "error";
+    case DisplayMode::Debug: return "debug";
+  }
+  return "?";
+}
+
+DisplayMode parseDisplayMode(const std::string& name) {
+  for (DisplayMode m : {DisplayMode::Shaded, DisplayMode::Visibility, DisplayMode::Error, DisplayMode::Debug})
+    if (name == displayModeName(m)) return m;
+  throw InputError("mode: expected shaded, visibility, error or debug, got '" + name + "'");
+}
+
+LiveView::LiveView(Scene& scene, const RenderSettings& settings, std::string backend)
+    : scene_(scene), settings_(settings), backend_(std::move(backend)) {
+  settings_.repeat = 1;  // every displayed frame is one timed frame
+  rebuildRunner();
+}
+
+LiveView::~LiveView() {
+  session_.reset();  // before the runner it refers to
+}
+
+void LiveView::rebuildRunner() {
+  session_.reset();
+  runner_.reset();
+  runner_ = std::make_unique<FrameRunner>(scene_, settings_);
+  ++generation_;
+  if (technique_) startSession();
+}
+
+void LiveView::startSession() {
+  session_.reset();  // its GL objects go before the new ones are booked
+  session_ = std::make_unique<TechniqueSession>(*runner_, *technique_, parameters_);
+  history_.clear();
+}
+
+void LiveView::setTechnique(const RegisteredTechnique& technique, const std::map<std::string, std::string>& assignments) {
+  parameters_ = resolveParameters(technique.info->id, technique.info->parameters, assignments);
+  technique_ = &technique;
+  startSession();
+}
+
+void LiveView::setParameters(const std::map<std::string, std::string>& assignments) {
+  setTechnique(*technique_, assignments);
+}
+
+void LiveView::setShadowMap(int size, DepthFormat format) {
+  RenderSettings wanted = settings_;
+  wanted.shadowMapSize = size;
+  wanted.depthFormat = format;
+  validateSettings(wanted);
+  settings_ = wanted;
+  rebuildRunner();
+}
+
+void LiveView::cameraMoved() {
+  runner_->renderGBuffer();
+  ++generation_;
+}
+
+void LiveView::lightMoved() {
+  runner_->lightMoved();
+  ++generation_;
+}
+
+void LiveView::setMode(DisplayMode mode, std::string debugImage) {
+  mode_ = mode;
+  debugImage_ = std::move(debugImage);
+  if (!visibility_.pixels.empty()) rebuildImage();
+}
+
+void LiveView::renderFrame() {
+  lastFrame_ = session_->renderFrame();
+  visibility_ = session_->visibility();
+  debugImages_ = session_->technique().debugImages();
+  history_.push_back({lastFrame_.times, lastFrame_.cpuMs});
+  if (history_.size() > kHistoryFrames) history_.pop_front();
+  ++frames_;
+  rebuildImage();
+}
+
+const ImageF& LiveView::groundTruth() {
+  if (!truth_ || truthGeneration_ != generation_) {
+    TechniqueSession truth(*runner_, shadowVolumeGroundTruth(), resolveParameters("groundtruth", {}, {}));
+    truth.renderFrame();
+    truth_ = truth.visibility();
+    truthGeneration_ = generation_;
+  }
+  return *truth_;
+}
+
+void LiveView::rebuildImage() {
+  imageNote_.clear();
+  try {
+    switch (mode_) {
+      case DisplayMode::Shaded: image_ = runner_->shade(visibility_); return;
+      case DisplayMode::Visibility: image_ = visibilityImage(visibility_); return;
+      case DisplayMode::Error: image_ = errorHeatMap(visibility_, groundTruth()); return;
+      case DisplayMode::Debug:
+        for (const auto& [name, debug] : debugImages_) {
+          if (debugImage_.empty() || name == debugImage_) {
+            image_ = debug;
+            return;
+          }
+        }
+        imageNote_ = debugImages_.empty()
+                         ? "no debug images: set the technique's debug parameter (if it has one)"
+                         : "no debug image named '" + debugImage_ + "'";
+        break;
+    }
+  } catch (const std::invalid_argument& error) {
+    imageNote_ = error.what();
+  }
+  image_ = runner_->shade(visibility_);  // what the mode could not show
+}
+
+ErrorMetrics LiveView::errorMetrics() { return computeErrorMetrics(visibility_, groundTruth()); }
+
+std::uint64_t LiveView::memoryBytes() const { return session_->memoryBytes(); }
+
+nlohmann::json LiveView::record() {
+  TechniqueRun run;
+  run.id = technique_->info->id;
+  run.params = parameters_.toJson();
+  run.visibility = visibility_;
+  run.times = lastFrame_.times;
+  run.cpuMs = lastFrame_.cpuMs;
+  run.memoryBytes = memoryBytes();
+  nlohmann::json record = makeRecord(run, *runner_, backend_);
+  record["error"] = toJson(errorMetrics());
+  return record;
+}
+
+}  // namespace testbed::viewer

@@ -1,0 +1,98 @@
+#pragma once
+// What the viewer shows, through the same harness as `render`: a FrameRunner over the
+// viewer's scene and a TechniqueSession of the chosen technique, one frame per call, with
+// the image of the chosen display mode. The shaded image is FrameRunner::shade() of the
+// session's visibility, byte for byte what `render` writes as T.png.
+#include <deque>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "testbed/app/frame_runner.h"
+#include "testbed/metrics/metrics.h"
+
+namespace testbed::viewer {
+
+enum class DisplayMode { Shaded, Visibility, Error, Debug };
+const char* displayModeName(DisplayMode mode);
+DisplayMode parseDisplayMode(const std::string& name);  // "shaded", ...; throws InputError
+
+struct FrameSample {
+  PassTimes times;
+  double cpuMs = 0;
+};
+
+class LiveView {
+ public:
+  // `scene` is the viewer's own copy (camera and light change); needs a current context.
+  LiveView(Scene& scene, const RenderSettings& settings, std::string backend);
+  ~LiveView();
+
+  // Throws InputError (as --set) for a bad assignment; the view keeps its technique then.
+  void setTechnique(const RegisteredTechnique& technique, const std::map<std::string, std::string>& assignments);
+  void setParameters(const std::map<std::string, std::string>& assignments);
+  void setShadowMap(int size, DepthFormat format);
+  // Call after changing the scene's camera / light.
+  void cameraMoved();
+  void lightMoved();
+
+  void setMode(DisplayMode mode, std::string debugImage = {});
+  DisplayMode mode() const { return mode_; }
+  const std::string& debugImageName() const { return debugImage_; }
+
+  // Renders one frame of the technique and rebuilds the displayed image.
+  void renderFrame();
+  std::uint64_t framesRendered() const { return frames_; }
+
+  // The displayed image (RGB, or one channel in visibility mode; top-down). In error mode
+  // it is the heat map against the shadow volumes; in debug mode the named debug image.
+  const ImageF& image() const { return image_; }
+  // Why the image is not what the mode asks for (no debug image, no receiver, ...); empty if it is.
+  const std::string& imageNote() const { return imageNote_; }
+  const ImageF& visibility() const { return visibility_; }
+  const std::vector<std::pair<std::string, ImageF>>& debugImages() const { return debugImages_; }
+
+  // Error metrics of the last frame against the ground truth (rendered if stale). Throws
+  // std::invalid_argument when the frame has no receiver or NaN on one.
+  ErrorMetrics errorMetrics();
+  // The record `render` would write for this frame, with its error block.
+  nlohmann::json record();
+
+  const Scene& scene() const { return scene_; }
+  const RenderSettings& settings() const { return settings_; }
+  const RegisteredTechnique& technique() const { return *technique_; }
+  const ParameterSet& parameters() const { return parameters_; }
+  const std::string& backend() const { return backend_; }
+  TimingSource timingSource() const { return timingSourceFor(backend_); }
+  std::uint64_t memoryBytes() const;
+  const std::deque<FrameSample>& history() const { return history_; }
+  // Grows by one whenever the camera, light or settings change (stamps metrics).
+  std::uint64_t viewGeneration() const { return generation_; }
+
+ private:
+  void rebuildRunner();
+  void startSession();
+  const ImageF& groundTruth();
+  void rebuildImage();
+
+  Scene& scene_;
+  RenderSettings settings_;
+  std::string backend_;
+  std::unique_ptr<FrameRunner> runner_;
+  const RegisteredTechnique* technique_ = nullptr;
+  ParameterSet parameters_;
+  std::unique_ptr<TechniqueSession> session_;
+  TechniqueSession::Frame lastFrame_;
+
+  ImageF visibility_, image_;
+  std::vector<std::pair<std::string, ImageF>> debugImages_;
+  std::string imageNote_;
+  DisplayMode mode_ = DisplayMode::Shaded;
+  std::string debugImage_;
+
+  std::optional<ImageF> truth_;
+  std::uint64_t truthGeneration_ = 0, generation_ = 1, frames_ = 0;
+  std::deque<FrameSample> history_;
+};
+
+}  // namespace testbed::viewer

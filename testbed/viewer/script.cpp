@@ -1,0 +1,169 @@
+#include "testbed/viewer/script.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "testbed/app/frame_runner.h"
+#include "testbed/core/error.h"
+#include "testbed/technique/registry.h"
+
+namespace testbed::viewer {
+namespace {
+
+constexpr int kMaxFrames = 100000;
+
+struct Verb {
+  const char* word;
+  ActionKind kind;
+  int minArgs, maxArgs;
+};
+
+constexpr Verb kVerbs[] = {
+    {"technique", ActionKind::Technique, 1, 1},   {"set", ActionKind::Set, 1, 1},
+    {"orbit", ActionKind::Orbit, 2, 2},           {"pan", ActionKind::Pan, 2, 2},
+    {"zoom", ActionKind::Zoom, 1, 1},             {"light", ActionKind::Light, 2, 2},
+    {"mode", ActionKind::Mode, 1, 2},             {"shadow-map", ActionKind::ShadowMap, 1, 1},
+    {"depth-format", ActionKind::DepthFormat, 1, 1}, {"frames", ActionKind::Frames, 1, 1},
+    {"screenshot", ActionKind::Screenshot, 1, 1}, {"window-screenshot", ActionKind::WindowScreenshot, 1, 1},
+    {"save-scene", ActionKind::SaveScene, 1, 1},  {"metrics", ActionKind::Metrics, 1, 1},
+    {"quit", ActionKind::Quit, 0, 0},
+};
+
+std::string verbList() {
+  std::string list;
+  for (const auto& v : kVerbs) list += (list.empty() ? "" : ", ") + std::string(v.word);
+  return list;
+}
+
+float number(const std::string& word, const std::string& what) {
+  float value = 0;
+  const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
+  if (ec != std::errc() || end != word.data() + word.size() || !std::isfinite(value))
+    throw InputError(what + ": expected a finite number, got '" + word + "'");
+  return value;
+}
+
+int integer(const std::string& word, int lo, int hi, const std::string& what) {
+  int value = 0;
+  const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
+  if (ec != std::errc() || end != word.data() + word.size() || value < lo || value > hi)
+    throw InputError(what + ": expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi) +
+                     ", got '" + word + "'");
+  return value;
+}
+
+// Follows the technique and its assignments through the script, so a `set` line is
+// checked exactly as `--set` would be for the technique current at that line.
+class Checker {
+ public:
+  explicit Checker(std::string technique) : technique_(std::move(technique)) {}
+
+  void check(ScriptAction& a, const std::vector<std::string>& args) {
+    const std::string& what = args.empty() ? std::string() : args[0];
+    switch (a.kind) {
+      case ActionKind::Technique:
+        technique_ = findTechnique(what).info->id;
+        assignments_.clear();
+        break;
+      case ActionKind::Set: {
+        auto [name, value] = splitAssignment(what);
+        const auto& info = *findTechnique(technique_).info;
+        auto trial = assignments_;
+        trial[name] = value;
+        resolveParameters(info.id, info.parameters, trial);
+        assignments_ = std::move(trial);
+        break;
+      }
+      case ActionKind::Orbit:
+      case ActionKind::Pan:
+      case ActionKind::Light:
+        for (int i = 0; i < 2; ++i) a.numbers[i] = number(args[std::size_t(i)], "expected two numbers");
+        break;
+      case ActionKind::Zoom:
+        a.numbers[0] = number(what, "zoom");
+        if (!(a.numbers[0] > 0)) throw InputError("zoom: the factor must be > 0, got '" + what + "'");
+        break;
+      case ActionKind::Mode:
+        if (what != "shaded" && what != "visibility" && what != "error" && what != "debug")
+          throw InputError("mode: expected shaded, visibility, error or debug, got '" + what + "'");
+        if (args.size() == 2 && what != "debug") throw InputError("mode: only debug takes an image name");
+        if (args.size() == 2) a.detail = args[1];
+        break;
+      case ActionKind::ShadowMap: a.count = integer(what, 1, kMaxShadowMapSize, "shadow-map"); break;
+      case ActionKind::DepthFormat: parseDepthFormat(what); break;
+      case ActionKind::Frames: a.count = integer(what, 1, kMaxFrames, "frames"); break;
+      case ActionKind::Screenshot: checkImagePath(what, true, "screenshot"); break;
+      case ActionKind::WindowScreenshot: checkImagePath(what, false, "window-screenshot"); break;
+      case ActionKind::SaveScene:
+      case ActionKind::Metrics:
+        if (std::filesystem::path(what).extension() != ".json")
+          throw InputError(std::string(a.kind == ActionKind::Metrics ? "metrics" : "save-scene") +
+                           ": the file must end in .json, got '" + what + "'");
+        break;
+      case ActionKind::Quit: break;
+    }
+    a.text = what;
+  }
+
+ private:
+  std::string technique_;
+  std::map<std::string, std::string> assignments_;
+};
+
+}  // namespace
+
+void checkImagePath(const std::filesystem::path& path, bool floatAllowed, const std::string& what) {
+  const std::string ext = path.extension().string();
+  if (ext == ".png" || (floatAllowed && ext == ".exr")) return;
+  throw InputError(what + ": " + path.string() + ": the file must end in .png" + (floatAllowed ? " or .exr" : ""));
+}
+
+std::vector<ScriptAction> parseScript(const std::string& text, const std::string& name, std::string technique) {
+  std::vector<ScriptAction> actions;
+  Checker checker(std::move(technique));
+  std::istringstream lines(text);
+  int number = 0;
+  for (std::string line; std::getline(lines, line);) {
+    ++number;
+    const auto hash = line.find('#');
+    if (hash != std::string::npos) line.erase(hash);
+    std::istringstream words(line);
+    std::vector<std::string> args;
+    for (std::string w; words >> w;) args.push_back(w);
+    if (args.empty()) continue;
+    const std::string where = name + ":" + std::to_string(number) + ": ";
+    const std::string verb = args.front();
+    args.erase(args.begin());
+    const Verb* found = nullptr;
+    for (const auto& v : kVerbs)
+      if (verb == v.word) found = &v;
+    if (!found) throw InputError(where + "unknown action '" + verb + "' (actions: " + verbList() + ")");
+    if (int(args.size()) < found->minArgs || int(args.size()) > found->maxArgs)
+      throw InputError(where + verb + ": expected " + std::to_string(found->minArgs) +
+                       (found->maxArgs != found->minArgs ? "-" + std::to_string(found->maxArgs) : "") +
+                       " argument(s), got " + std::to_string(args.size()));
+    ScriptAction action;
+    action.line = number;
+    action.kind = found->kind;
+    try {
+      checker.check(action, args);
+    } catch (const InputError& error) {
+      throw InputError(where + error.what());
+    }
+    actions.push_back(std::move(action));
+  }
+  return actions;
+}
+
+std::vector<ScriptAction> readScript(const std::filesystem::path& file, const std::string& technique) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError("--script: cannot read " + file.string());
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseScript(text.str(), file.string(), technique);
+}
+
+}  // namespace testbed::viewer

@@ -1,0 +1,49 @@
+#pragma once
+// `testbed view --script FILE`: actions replayed one per frame, one per line (README
+// "Viewer" documents the format). The whole file is checked before the window opens: a bad
+// line throws InputError("FILE:LINE: ...").
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace testbed::viewer {
+
+enum class ActionKind {
+  Technique,         // technique ID            switch, parameters at their defaults
+  Set,               // set NAME=VALUE          a parameter of the current technique
+  Orbit,             // orbit YAW PITCH         camera around its target, degrees
+  Pan,               // pan DX DY               camera in the image plane, pixels
+  Zoom,              // zoom FACTOR             eye–target distance × FACTOR
+  Light,             // light YAW PITCH         light around its target, degrees
+  Mode,              // mode shaded|visibility|error|debug [NAME]
+  ShadowMap,         // shadow-map N
+  DepthFormat,       // depth-format 16|24|32f
+  Frames,            // frames N                render N frames before the next action
+  Screenshot,        // screenshot PATH         the 3D view as displayed (.png or .exr)
+  WindowScreenshot,  // window-screenshot PATH  the whole window, panel included (.png)
+  SaveScene,         // save-scene PATH         the scene file with the current camera and light
+  Metrics,           // metrics PATH            error metrics of the current frame (JSON)
+  Quit,              // quit
+};
+
+struct ScriptAction {
+  int line = 0;
+  ActionKind kind = ActionKind::Quit;
+  std::string text;            // id, NAME=VALUE, mode, depth format or path
+  std::string detail;          // mode debug: the debug image's name (empty: the first)
+  float numbers[2] = {0, 0};   // orbit, pan, light: two; zoom: one
+  int count = 0;               // shadow-map, frames
+};
+
+// `technique` is the viewer's technique when the script starts: `set` lines are checked
+// against whichever technique is current at that line, plugins included.
+std::vector<ScriptAction> readScript(const std::filesystem::path& file, const std::string& technique);
+
+// The same from text (for tests); `name` is used in messages.
+std::vector<ScriptAction> parseScript(const std::string& text, const std::string& name, std::string technique);
+
+// Image outputs (--screenshot, screenshot lines) must end in .png or .exr, the window's in
+// .png; throws InputError("<what>: ...") otherwise.
+void checkImagePath(const std::filesystem::path& path, bool floatAllowed, const std::string& what);
+
+}  // namespace testbed::viewer

@@ -1,0 +1,91 @@
+#include "testbed/viewer/script.h"
+
+#include <gtest/gtest.h>
+
+#include "testbed/core/error.h"
+
+namespace testbed::viewer {
+namespace {
+
+TEST(ViewerScript, ParsesEveryActionSkippingCommentsAndBlankLines) {
+  const auto actions = parseScript(R"(# a tour
+technique pcf
+set kernel=5     # as --set
+set bilinear=true
+orbit 30 -10
+pan 12 4
+zoom 0.5
+light -45 5
+
+mode error
+mode debug discontinuity
+shadow-map 512
+depth-format 32f
+frames 3
+screenshot out/a.png
+window-screenshot out/w.png
+save-scene out/s.json
+metrics out/m.json
+technique smsr
+set max_search=8
+quit
+)",
+                                   "tour.txt", "sm");
+  ASSERT_EQ(actions.size(), 19u);
+  EXPECT_EQ(actions[0].kind, ActionKind::Technique);
+  EXPECT_EQ(actions[0].text, "pcf");
+  EXPECT_EQ(actions[1].text, "kernel=5");
+  EXPECT_EQ(actions[1].line, 3);
+  EXPECT_EQ(actions[3].kind, ActionKind::Orbit);
+  EXPECT_FLOAT_EQ(actions[3].numbers[1], -10.0f);
+  EXPECT_FLOAT_EQ(actions[5].numbers[0], 0.5f);
+  EXPECT_EQ(actions[6].line, 8);
+  EXPECT_EQ(actions[8].detail, "discontinuity");
+  EXPECT_EQ(actions[9].count, 512);
+  EXPECT_EQ(actions[11].count, 3);
+  EXPECT_EQ(actions.back().kind, ActionKind::Quit);
+}
+
+std::string errorOf(const std::string& text, const std::string& technique = "sm") {
+  try {
+    parseScript(text, "s.txt", technique);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "(accepted)";
+}
+
+TEST(ViewerScript, BadLinesNameTheFileAndLine) {
+  EXPECT_EQ(errorOf("orbit 1 2\nspin 3\n"),
+            "s.txt:2: unknown action 'spin' (actions: technique, set, orbit, pan, zoom, light, mode, shadow-map, "
+            "depth-format, frames, screenshot, window-screenshot, save-scene, metrics, quit)");
+  EXPECT_EQ(errorOf("orbit 1\n"), "s.txt:1: orbit: expected 2 argument(s), got 1");
+  EXPECT_EQ(errorOf("orbit 1 nan\n"), "s.txt:1: expected two numbers: expected a finite number, got 'nan'");
+  EXPECT_EQ(errorOf("zoom -2\n"), "s.txt:1: zoom: the factor must be > 0, got '-2'");
+  EXPECT_EQ(errorOf("mode glow\n"), "s.txt:1: mode: expected shaded, visibility, error or debug, got 'glow'");
+  EXPECT_EQ(errorOf("frames 0\n"), "s.txt:1: frames: expected an integer in 1..100000, got '0'");
+  EXPECT_EQ(errorOf("shadow-map 99999999\n"), "s.txt:1: shadow-map: expected an integer in 1..16384, got '99999999'");
+  EXPECT_EQ(errorOf("screenshot a.jpg\n"), "s.txt:1: screenshot: a.jpg: the file must end in .png or .exr");
+  EXPECT_EQ(errorOf("window-screenshot a.exr\n"), "s.txt:1: window-screenshot: a.exr: the file must end in .png");
+  EXPECT_EQ(errorOf("save-scene a.txt\n"), "s.txt:1: save-scene: the file must end in .json, got 'a.txt'");
+  EXPECT_EQ(errorOf("quit now\n"), "s.txt:1: quit: expected 0 argument(s), got 1");
+  EXPECT_NE(errorOf("technique nope\n").find("s.txt:1: "), std::string::npos);
+  EXPECT_NE(errorOf("depth-format 8\n").find("s.txt:1: "), std::string::npos);
+}
+
+// `set` is checked against the technique current at that line, as --set would be.
+TEST(ViewerScript, SetFollowsTheCurrentTechnique) {
+  EXPECT_EQ(errorOf("set kernel=5\n"), "s.txt:1: --set kernel=5: technique 'sm' has no parameter 'kernel' (its "
+                                       "parameters: bias, offset_factor, offset_units)");
+  EXPECT_EQ(errorOf("technique pcf\nset kernel=5\n"), "(accepted)");
+  EXPECT_EQ(errorOf("technique pcf\nset kernel=4\n"), "s.txt:2: --set kernel=4: must be odd");
+  EXPECT_EQ(errorOf("set kernel=5\n", "pcf"), "(accepted)");
+  EXPECT_EQ(errorOf("technique pcf\ntechnique sm\nset kernel=5\n").substr(0, 8), "s.txt:3:");
+}
+
+TEST(ViewerScript, MissingFileIsAnInputError) {
+  EXPECT_THROW(readScript("/nonexistent/script.txt", "sm"), InputError);
+}
+
+}  // namespace
+}  // namespace testbed::viewer
