@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <csignal>
@@ -58,8 +59,11 @@ void onSignal(int signal) {
   for (int i = kSlots - 1; i >= 0; --i) {
     const char* path = paths[i].load();
     if (path && kinds[i].load() == int(InterruptCleanup::Kind::StagingFolder)) {
-      emptyFolder(path);
-      ::rmdir(path);
+      // The handler may run on another thread while the main one still writes: retry.
+      for (int attempt = 0; attempt < 3; ++attempt) {
+        emptyFolder(path);
+        if (::rmdir(path) == 0 || errno == ENOENT) break;
+      }
     }
   }
   // Created folders innermost first: the longer of two nested paths is the inner one.
