@@ -15,11 +15,16 @@ using nlohmann::json;
 
 constexpr std::size_t kBrief = 40;
 
+// A string quoted as JSON, cut first so that a megabyte string is not copied to show 40.
+std::string quoted(const std::string& text) {
+  return json(text.substr(0, kBrief)).dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
 // Appends a brief form of `value` to `out` until `out` reaches kBrief characters.
 void appendBrief(const json& value, std::string& out, int depth) {
   if (out.size() >= kBrief) return;
   if (!value.is_structured()) {
-    out += value.dump(-1, ' ', false, json::error_handler_t::replace).substr(0, kBrief + 1);
+    out += value.is_string() ? quoted(value.get_ref<const std::string&>()) : value.dump();
     return;
   }
   const bool array = value.is_array();
@@ -29,7 +34,7 @@ void appendBrief(const json& value, std::string& out, int depth) {
   for (auto it = value.begin(); depth < 4 && it != value.end() && out.size() < kBrief; ++it) {
     if (!first) out += ',';
     first = false;
-    if (!array) out += json(it.key()).dump(-1, ' ', false, json::error_handler_t::replace) + ':';
+    if (!array) out += quoted(it.key()) + ':';
     appendBrief(*it, out, depth + 1);
   }
   out += array ? ']' : '}';
