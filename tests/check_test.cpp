@@ -1,9 +1,6 @@
 // End-to-end tests of `testbed check` (README "Regression check") on the committed
 // results/: exit codes 0 / 3 / 2, what the report names, and --out. No GL: each run takes
 // milliseconds.
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -16,6 +13,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/cli_helpers.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -23,63 +22,13 @@ using nlohmann::json;
 
 const fs::path kResults = fs::path(TESTBED_SOURCE_DIR) / "results";
 
-// A fresh temporary folder, removed with everything in it.
-class TempDir {
- public:
-  TempDir() {
-    path_ = fs::temp_directory_path() /
-            ("testbed-check-" + std::to_string(::getpid()) + "-" + std::to_string(std::random_device{}()));
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-  const fs::path& path() const { return path_; }
+using namespace testbed::cli;
 
- private:
-  fs::path path_;
-};
-
-std::string readFile(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-void writeFile(const fs::path& file, const std::string& text) {
-  fs::create_directories(file.parent_path());
-  std::ofstream(file, std::ios::binary) << text;
-}
-
-std::string quote(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-struct Result {
-  int exitCode = -1;
-  std::string out, err;
-};
-
-// `testbed check ARGS`, stdout through a pipe, stderr through a file.
-Result check(const std::vector<std::string>& args, const TempDir& tmp) {
-  const fs::path errFile = tmp / "stderr.txt";
-  std::string command = "timeout -k 5 60 " + quote(TESTBED_BINARY) + " check";
-  for (const auto& arg : args) command += " " + quote(arg);
-  command += " 2>" + quote(errFile.string());
-  Result result;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return result;
-  char buffer[4096];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) result.out.append(buffer, n);
-  const int status = ::pclose(pipe);
-  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  result.err = readFile(errFile);
-  return result;
+// `testbed check ARGS`.
+RunResult check(const std::vector<std::string>& args, const TempDir&) {
+  std::vector<std::string> all = {"check"};
+  all.insert(all.end(), args.begin(), args.end());
+  return runTestbed(all, {.cwd = {}, .env = {}, .timeoutSeconds = 60});
 }
 
 json bunny512() { return json::parse(readFile(kResults / "bunny-512" / "metrics.json")); }
@@ -92,7 +41,7 @@ std::size_t indexOf(const json& records, const std::string& technique) {
 
 TEST(CliCheck, SameFolderPasses) {
   TempDir tmp;
-  const Result r = check({"--baseline", (kResults / "bunny-512").string(), "--current",
+  const RunResult r = check({"--baseline", (kResults / "bunny-512").string(), "--current",
                           (kResults / "bunny-512" / "metrics.json").string()},
                          tmp);
   EXPECT_EQ(r.exitCode, 0) << r.err << r.out;
@@ -101,7 +50,7 @@ TEST(CliCheck, SameFolderPasses) {
 
 TEST(CliCheck, EveryResultsFolderPasses) {
   TempDir tmp;
-  const Result r = check({"--baseline", kResults.string(), "--current", kResults.string()}, tmp);
+  const RunResult r = check({"--baseline", kResults.string(), "--current", kResults.string()}, tmp);
   EXPECT_EQ(r.exitCode, 0) << r.err << r.out;
   // 10 folders (5 scenes × 2 map sizes), every technique but the ground truth in each.
   EXPECT_NE(r.out.find("**PASS**: 0 regressions"), std::string::npos) << r.out;
@@ -115,7 +64,7 @@ TEST(CliCheck, DoctoredRunExitsThreeNamingTechniqueAndMetric) {
   pcf["error"]["edge_mismatch_pct"] = pcf["error"]["edge_mismatch_pct"].get<double>() * 1.5;
   writeFile(tmp / "run" / "metrics.json", records.dump(2));
   const fs::path report = tmp / "reports" / "check.md";
-  const Result r = check({"--baseline", (kResults / "bunny-512").string(), "--current", (tmp / "run").string(),
+  const RunResult r = check({"--baseline", (kResults / "bunny-512").string(), "--current", (tmp / "run").string(),
                           "--out", report.string()},
                          tmp);
   EXPECT_EQ(r.exitCode, 3) << r.err << r.out;
@@ -126,7 +75,7 @@ TEST(CliCheck, DoctoredRunExitsThreeNamingTechniqueAndMetric) {
   EXPECT_FALSE(fs::exists(tmp / "reports" / "check.md.partial"));
 
   // The same change inside a generous tolerance passes.
-  const Result loose = check({"--baseline", (kResults / "bunny-512").string(), "--current", (tmp / "run").string(),
+  const RunResult loose = check({"--baseline", (kResults / "bunny-512").string(), "--current", (tmp / "run").string(),
                               "--error-tolerance", "0.6"},
                              tmp);
   EXPECT_EQ(loose.exitCode, 0) << loose.out;
@@ -147,7 +96,7 @@ TEST(CliCheck, BadInputExitsTwoNamingTheFile) {
     std::string expected;  // part of the one stderr line
   };
   const std::vector<Case> cases = {
-      {{"--current", (tmp / "broken").string()}, (tmp / "broken" / "metrics.json").string() + ": not valid JSON"},
+      {{"--current", (tmp / "broken").string()}, (tmp / "broken" / "metrics.json").string() + ": line 1, column 16: JSON syntax error"},
       {{"--current", (tmp / "nofield").string()},
        (tmp / "nofield" / "metrics.json").string() + ": [" + std::to_string(vsm) + "].error.leak_pct: missing"},
       {{"--current", (tmp / "absent").string()}, "--current: " + (tmp / "absent").string() + ": no such file"},
@@ -159,7 +108,7 @@ TEST(CliCheck, BadInputExitsTwoNamingTheFile) {
   for (const auto& c : cases) {
     std::vector<std::string> args = {"--baseline", baseline};
     args.insert(args.end(), c.args.begin(), c.args.end());
-    const Result r = check(args, tmp);
+    const RunResult r = check(args, tmp);
     EXPECT_EQ(r.exitCode, 2) << c.expected << "\n" << r.out;
     EXPECT_NE(r.err.find(c.expected), std::string::npos) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

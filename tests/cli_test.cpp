@@ -5,9 +5,6 @@
 //
 // Every test works in its own temporary directory, so tests can run in parallel (ctest
 // runs each discovered test as its own process) and leave nothing behind.
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -25,117 +22,13 @@
 #include <nlohmann/json.hpp>
 
 #include "testbed/io/image_io.h"
+#include "tests/cli_helpers.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-std::string uniqueName(const std::string& prefix) {
-  static std::atomic<unsigned> counter{0};
-  static const unsigned salt = std::random_device{}();
-  return prefix + "-" + std::to_string(::getpid()) + "-" + std::to_string(salt) + "-" +
-         std::to_string(counter++);
-}
-
-// A fresh directory under the system temp folder, removed with everything in it.
-class TempDir {
- public:
-  TempDir() : path_(fs::temp_directory_path() / uniqueName("testbed-cli")) { fs::create_directories(path_); }
-  ~TempDir() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  const fs::path& path() const { return path_; }
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  fs::path path_;
-};
-
-void writeFile(const fs::path& file, const std::string& text) {
-  fs::create_directories(file.parent_path());
-  std::ofstream out(file, std::ios::binary);
-  out << text;
-  ASSERT_TRUE(out.flush()) << "cannot write " << file;
-}
-
-std::string readFile(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// Names of the entries directly inside `dir`, sorted; empty when it does not exist.
-std::vector<std::string> filesIn(const fs::path& dir) {
-  std::vector<std::string> names;
-  std::error_code ec;
-  if (!fs::is_directory(dir, ec)) return names;
-  for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
-std::string shellQuote(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-struct RunResult {
-  int exitCode = -1;  // the process's exit status; 124 when it ran past the time limit
-  std::string out, err;
-  std::string command;  // for failure messages
-
-  // The command, its exit code and stderr: printed by assertions so a failure shows what happened.
-  std::string describe() const { return command + "\n  exit " + std::to_string(exitCode) + "\n  stderr: " + err; }
-};
-
-struct RunOptions {
-  fs::path cwd;                                          // empty: the test's own
-  std::vector<std::pair<std::string, std::string>> env;  // added to the environment
-};
-
-// Runs the testbed binary through /bin/sh, stdout through a pipe and stderr into a temp
-// file. `timeout` keeps a hanging binary (a mesh reader looping on a corrupt file, say)
-// from hanging the whole test run.
-RunResult runTestbed(const std::vector<std::string>& args, const RunOptions& options = {}) {
-  const fs::path errFile = fs::temp_directory_path() / uniqueName("testbed-cli-stderr");
-  std::string command;
-  if (!options.cwd.empty()) command += "cd " + shellQuote(options.cwd.string()) + " && ";
-  command += "exec env";
-  // Appending piecewise (not `" " + quoted`) also keeps GCC 12's -Wrestrict false positive away.
-  auto append = [&](const std::string& word) {
-    command += ' ';
-    command += shellQuote(word);
-  };
-  for (const auto& [name, value] : options.env) append(name + "=" + value);
-  command += " timeout -k 5 120";
-  append(TESTBED_BINARY);
-  for (const auto& arg : args) append(arg);
-
-  RunResult result;
-  result.command = command;
-  command += " 2>";
-  command += shellQuote(errFile.string());
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (!pipe) {
-    ADD_FAILURE() << "popen failed for " << command;
-    return result;
-  }
-  char buffer[4096];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) result.out.append(buffer, n);
-  const int status = ::pclose(pipe);
-  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  result.err = readFile(errFile);
-  std::error_code ignored;
-  fs::remove(errFile, ignored);
-  return result;
-}
+using namespace testbed::cli;
 
 // `render --scene S` plus defaults (technique sm, a small size) for every option that
 // `extra` does not set itself, then `extra`.
@@ -184,14 +77,6 @@ const char* const kCubeOff = R"(OFF
 4 1 2 6 5
 4 0 4 7 3
 )";
-
-// Compares without printing the file: on failure it may hold a whole PNG.
-::testing::AssertionResult fileHolds(const fs::path& file, const std::string& expected) {
-  if (!fs::is_regular_file(file)) return ::testing::AssertionFailure() << file << " is not a regular file";
-  const std::string actual = readFile(file);
-  if (actual == expected) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << file << " was changed: it now holds " << actual.size() << " bytes";
-}
 
 bool sameFloat(float a, float b) { return (std::isnan(a) && std::isnan(b)) || a == b; }
 

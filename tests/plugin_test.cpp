@@ -2,9 +2,6 @@
 // through the real binary as users load them. The fixtures are built from
 // tests/plugin_example/: `example-sm` (a copy of sm with its own embedded shader) and one
 // broken library per fault the loader must turn away with exit code 2.
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -18,62 +15,14 @@
 #include <nlohmann/json.hpp>
 
 #include "testbed/io/image_io.h"
+#include "tests/cli_helpers.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-class TempDir {
- public:
-  TempDir() {
-    std::string pattern = (fs::temp_directory_path() / "testbed-plugin-XXXXXX").string();
-    path_ = ::mkdtemp(pattern.data()) ? fs::path(pattern) : fs::path();
-  }
-  ~TempDir() {
-    std::error_code ignored;
-    if (!path_.empty()) fs::remove_all(path_, ignored);
-  }
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
-std::string readFile(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-std::string quote(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-struct RunResult {
-  int exitCode = -1;
-  std::string out, err, command;
-  std::string describe() const { return command + "\n  exit " + std::to_string(exitCode) + "\n  stderr: " + err; }
-};
-
-RunResult runTestbed(const std::vector<std::string>& args) {
-  TempDir tmp;
-  RunResult run;
-  run.command = "timeout -k 5 120 " + quote(TESTBED_BINARY);
-  for (const auto& arg : args) run.command += " " + quote(arg);
-  FILE* pipe = ::popen((run.command + " 2>" + quote((tmp / "stderr").string())).c_str(), "r");
-  if (!pipe) return run;
-  char buffer[4096];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) run.out.append(buffer, n);
-  const int status = ::pclose(pipe);
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.err = readFile(tmp / "stderr");
-  return run;
-}
+using namespace testbed::cli;
 
 const std::string kScene = std::string(TESTBED_SOURCE_DIR) + "/scenes/wall.json";
 const std::vector<std::string> kSmall = {"--size", "160x90", "--shadow-map", "256"};

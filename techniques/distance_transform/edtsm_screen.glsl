@@ -17,7 +17,7 @@ float cameraDepth(vec3 position) {
   return clip.z / clip.w * 0.5 + 0.5;
 }
 
-bool sameSurface(float depthA, float depthB) { return abs(depthA - depthB) < uDepthThreshold; }
+bool sameSurface(float depthA, float depthB) { return abs(depthA - depthB) <= uDepthThreshold; }
 
 // (value, depth) at `pixel` of an RG texture in the layout above; depth −1 off the screen.
 vec2 fetchWithDepth(sampler2D map, ivec2 pixel) {

@@ -4,11 +4,12 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "testbed/app/commands.h"
 #include "testbed/core/error.h"
-#include "testbed/io/image_io.h"
+#include "testbed/io/output_files.h"
 #include "testbed/report/regression_check.h"
 
 namespace testbed {
@@ -46,20 +47,26 @@ CommandRunner addCheckCommand(CLI::App& app) {
     if (!command->parsed()) return -1;
     checkTolerance("--speed-tolerance", options->tolerances.speed);
     checkTolerance("--error-tolerance", options->tolerances.error);
+    // Every input error before anything is written or printed; OutputFiles stages and
+    // renames, so a CI never reads a half-written report, and refuses to replace anything
+    // but a regular file (--out /dev/null would otherwise become one).
+    std::optional<OutputFiles> files;
     std::filesystem::path out(options->out);
-    if (!options->out.empty() && (std::filesystem::is_directory(out) || out.filename().empty()))
-      throw InputError("--out: " + options->out + " is a folder; give a file name");
-    // Input errors first, so nothing is written for a bad invocation.
+    if (!options->out.empty()) {
+      if (std::filesystem::is_directory(out) || out.filename().empty() || out.filename() == "." ||
+          out.filename() == "..")
+        throw InputError("--out: " + options->out + " is a folder; give a file name");
+      files.emplace(out.has_parent_path() ? out.parent_path() : std::filesystem::path("."));
+      files->claim(out.filename().string());
+    }
     const auto baseline = loadCheckRecords(options->baseline, "--baseline");
     const auto current = loadCheckRecords(options->current, "--current");
     const CheckReport report = compareRecords(baseline, current, options->tolerances);
     const std::string markdown = checkReportMarkdown(report, options->tolerances);
     std::cout << markdown << std::flush;
-    if (!options->out.empty()) {
-      // OutputFiles stages and renames, so a CI never reads a half-written report.
-      OutputFiles files(out.has_parent_path() ? out.parent_path() : std::filesystem::path("."));
-      files.writeText(out.filename().string(), markdown);
-      files.commit();
+    if (files) {
+      files->writeText(out.filename().string(), markdown);
+      files->commit();
     }
     return report.failed() ? kRegressionsFound : 0;
   };

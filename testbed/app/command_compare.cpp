@@ -8,6 +8,7 @@
 #include "testbed/app/commands.h"
 #include "testbed/app/plugins.h"
 #include "testbed/core/error.h"
+#include "testbed/core/messages.h"
 #include "testbed/gl/context.h"
 #include "testbed/metrics/metrics.h"
 #include "testbed/report/comparison.h"
@@ -28,10 +29,14 @@ std::vector<const RegisteredTechnique*> chooseTechniques(const std::string& list
     for (const auto& t : all) add(t);
     return chosen;
   }
-  std::stringstream items(list);
-  for (std::string id; std::getline(items, id, ',');) {
-    if (id.empty()) throw InputError("--techniques: empty name in '" + list + "'");
+  // Every comma separates two names: "pcf," and "" hold an empty one (getline would drop it).
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = list.find(',', start);
+    const std::string id = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (id.empty()) throw InputError("--techniques: empty name in '" + list + "' (give all, or ids separated by commas)");
     add(findTechnique(id));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
   }
   return chosen;
 }
@@ -48,7 +53,28 @@ std::map<std::string, std::map<std::string, std::string>> routeAssignments(const
     if (!byTechnique[name.substr(0, dot)].emplace(name.substr(dot + 1), value).second)
       throw InputError("--set " + text + ": set twice");
   }
+  // Checked against the technique's parameters even when it is not among --techniques, so
+  // a typo is an error whichever techniques a script happens to choose.
+  for (const auto& [id, values] : byTechnique) {
+    const RegisteredTechnique& technique = findTechnique(id);
+    for (const auto& [name, value] : values) {
+      try {
+        resolveParameters(id, technique.info->parameters, {{name, value}});
+      } catch (const InputError& error) {
+        // resolveParameters names the assignment without the technique: put it back.
+        const std::string plain = "--set " + name + "=" + value, what = error.what();
+        throw InputError("--set " + id + "." + name + "=" + value +
+                         (what.rfind(plain, 0) == 0 ? what.substr(plain.size()) : ": " + what));
+      }
+    }
+  }
   return byTechnique;
+}
+
+std::string milliseconds(double ms) {
+  std::ostringstream text;
+  text << ms << " ms";
+  return text.str();
 }
 
 }  // namespace
@@ -86,15 +112,21 @@ CommandRunner addCompareCommand(CLI::App& app) {
     if (options->areaSamples < 0 || options->areaSamples > 4096)
       throw InputError("--area-samples: " + std::to_string(options->areaSamples) + " is outside 0..4096");
     const Scene scene = loadScene(options->scene);
+    // The folder and every name the run will write, before any rendering.
+    OutputFiles files(options->common.out);
+    std::vector<std::string> ids = {"groundtruth", "area"};
+    for (const auto* t : techniques) ids.push_back(t->info->id);
+    for (const auto& id : ids)
+      for (const char* extension : {".png", ".exr", ".json"}) files.claim(id + extension);
+    for (const char* name : {"metrics.json", "report.md", "grid.png", "speed_vs_error.svg"}) files.claim(name);
     auto context = createContext(options->common.backend);
     validateSettings(settings);
     const std::string backend = context->description();
     FrameRunner runner(scene, settings);
-    OutputFiles files(options->common.out);
     const std::size_t steps = techniques.size() + 1 + (options->areaSamples > 0);
     std::size_t step = 0;
     auto progress = [&](const std::string& what) {
-      std::cerr << "[" << ++step << "/" << steps << "] " << what << " on " << scene.name << std::flush;
+      beginProgressLine("[" + std::to_string(++step) + "/" + std::to_string(steps) + "] " + what + " on " + scene.name);
     };
     auto writeOutputs = [&](const std::string& id, const TechniqueRun& run, const nlohmann::json& record) {
       files.writeImage(id + ".png", runner.shade(run.visibility));
@@ -113,7 +145,7 @@ CommandRunner addCompareCommand(CLI::App& app) {
     comparison.groundTruthVisibility = truth.visibility;
     writeOutputs("groundtruth", truth, comparison.groundTruth);
     all.push_back(comparison.groundTruth);
-    std::cerr << ": " << frameTimeMs(comparison.groundTruth) << " ms\n";
+    endProgressLine(": " + milliseconds(frameTimeMs(comparison.groundTruth)));
 
     std::optional<TechniqueRun> area;
     if (options->areaSamples > 0) {
@@ -124,7 +156,7 @@ CommandRunner addCompareCommand(CLI::App& app) {
       nlohmann::json record = makeRecord(*area, runner, backend);
       writeOutputs("area", *area, record);
       all.push_back(record);
-      std::cerr << ": " << frameTimeMs(record) << " ms\n";
+      endProgressLine(": " + milliseconds(frameTimeMs(record)));
     }
 
     for (std::size_t i = 0; i < techniques.size(); ++i) {
@@ -139,16 +171,18 @@ CommandRunner addCompareCommand(CLI::App& app) {
       all.push_back(record);
       comparison.entries.push_back({record, run.visibility, runner.shade(run.visibility),
                                     errorHeatMap(run.visibility, truth.visibility)});
-      std::cerr << ": " << frameTimeMs(record) << " ms (" << ratioToBaseline(comparison, record) << "x sm), mismatch "
-                << error.mismatchPct << "%, boundary " << error.boundaryMean << " px\n";
+      std::ostringstream result;
+      result << ": " << frameTimeMs(record) << " ms (" << ratioToBaseline(comparison, record) << "x sm), mismatch "
+             << error.mismatchPct << "%, boundary " << error.boundaryMean << " px";
+      endProgressLine(result.str());
     }
     files.writeText("metrics.json", all.dump(2) + "\n");
     files.writeText("report.md", reportMarkdown(comparison));
     files.writeImage("grid.png", comparisonGrid(comparison));
     files.writeText("speed_vs_error.svg", speedVsErrorSvg(comparison));
     files.commit();
-    std::cerr << "testbed: wrote report.md, grid.png, speed_vs_error.svg, metrics.json to " << options->common.out
-              << "\n";
+    std::cerr << "testbed: wrote report.md, grid.png, speed_vs_error.svg, metrics.json to "
+              << oneLine(options->common.out) << "\n";
     return 0;
   };
 }

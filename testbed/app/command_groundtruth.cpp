@@ -10,6 +10,7 @@
 #include "testbed/app/commands.h"
 #include "testbed/app/plugins.h"
 #include "testbed/core/error.h"
+#include "testbed/core/messages.h"
 #include "testbed/gl/context.h"
 
 namespace testbed {
@@ -45,20 +46,22 @@ CommandRunner addGroundTruthCommand(CLI::App& app) {
                                                  {{"area_samples", std::to_string(options->areaSamples)}}));
     }
     const Scene scene = loadScene(options->scene);
+    OutputFiles files(options->common.out);  // checked before any rendering
+    for (const auto& [technique, parameters] : runs)
+      for (const char* extension : {".png", ".exr", ".json"}) files.claim(technique->info->id + extension);
     auto context = createContext(options->common.backend);
     validateSettings(settings);
     FrameRunner runner(scene, settings);
-    OutputFiles files(options->common.out);
     for (const auto& [technique, parameters] : runs) {
       const std::string& id = technique->info->id;
-      std::cerr << "testbed: " << id << " on " << scene.name << "\n";
+      std::cerr << "testbed: " << id << " on " << oneLine(scene.name) << "\n";
       const TechniqueRun run = runner.run(*technique, parameters);
       files.writeImage(id + ".png", runner.shade(run.visibility));
       files.writeImage(id + ".exr", run.visibility);
       files.writeText(id + ".json", makeRecord(run, runner, context->description()).dump(2) + "\n");
     }
     files.commit();
-    std::cerr << "testbed: wrote to " << options->common.out << "\n";
+    std::cerr << "testbed: wrote to " << oneLine(options->common.out) << "\n";
     return 0;
   };
 }

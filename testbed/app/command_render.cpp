@@ -5,6 +5,7 @@
 
 #include "testbed/app/commands.h"
 #include "testbed/app/plugins.h"
+#include "testbed/core/messages.h"
 #include "testbed/gl/context.h"
 
 namespace testbed {
@@ -33,24 +34,26 @@ CommandRunner addRenderCommand(CLI::App& app) {
     const ParameterSet parameters =
         resolveParameters(technique.info->id, technique.info->parameters, parseAssignments(options->assignments));
     const Scene scene = loadScene(options->scene);
+    // The folder and the names the run will write, before any rendering.
+    OutputFiles files(options->common.out);
+    const std::string& id = technique.info->id;
+    for (const char* extension : {".png", ".exr", ".json"}) files.claim(id + extension);
 
     auto context = createContext(options->common.backend);
     validateSettings(settings);
-    std::cerr << "testbed: " << technique.info->id << " on " << scene.name << " (" << settings.size.x << "x"
+    std::cerr << "testbed: " << technique.info->id << " on " << oneLine(scene.name) << " (" << settings.size.x << "x"
               << settings.size.y << ", shadow map " << settings.shadowMapSize << "², " << context->description()
               << ")\n";
     FrameRunner runner(scene, settings);
     const TechniqueRun run = runner.run(technique, parameters);
 
-    OutputFiles files(options->common.out);
-    const std::string& id = technique.info->id;
     files.writeImage(id + ".png", runner.shade(run.visibility));
     files.writeImage(id + ".exr", run.visibility);
     const nlohmann::json record = makeRecord(run, runner, context->description());
     files.writeText(id + ".json", record.dump(2) + "\n");
     for (const auto& [name, image] : run.debugImages) files.writeImage(id + "." + name + ".png", image);
     files.commit();
-    std::cerr << "testbed: wrote " << id << ".png, .exr, .json to " << options->common.out << " ("
+    std::cerr << "testbed: wrote " << id << ".png, .exr, .json to " << oneLine(options->common.out) << " ("
               << frameTimeMs(record) << " ms, " << run.memoryBytes << " bytes)\n";
     return 0;
   };

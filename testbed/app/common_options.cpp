@@ -1,5 +1,4 @@
 #include <charconv>
-#include <filesystem>
 
 #include "testbed/app/commands.h"
 #include "testbed/core/error.h"
@@ -36,8 +35,6 @@ glm::ivec2 parseSize(const std::string& text) {
 }
 
 RenderSettings CommonOptions::settings() const {
-  if (std::filesystem::exists(out) && !std::filesystem::is_directory(out))
-    throw InputError("--out: " + out + " exists and is not a folder");
   RenderSettings s;
   s.size = parseSize(size);
   s.shadowMapSize = shadowMap;

@@ -7,6 +7,7 @@
 
 #include "testbed/app/commands.h"
 #include "testbed/core/error.h"
+#include "testbed/core/messages.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"shadow testbed: shadow-mapping techniques measured against exact ground truth"};
@@ -28,7 +29,7 @@ int main(int argc, char** argv) {
       found = found || sub->get_name() == argv[1];
     }
     if (!found) {
-      std::cerr << "testbed: unknown command '" << argv[1] << "' (commands: " << known << ")\n";
+      std::cerr << "testbed: unknown command '" << testbed::oneLine(argv[1]) << "' (commands: " << known << ")\n";
       return 2;
     }
   }
@@ -39,7 +40,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& help) {
     return app.exit(help);
   } catch (const CLI::ParseError& error) {
-    std::cerr << "testbed: " << error.what() << "\n";
+    std::cerr << "testbed: " << testbed::oneLine(error.what()) << "\n";
     return 2;
   }
   try {
@@ -49,10 +50,16 @@ int main(int argc, char** argv) {
     }
     return 2;
   } catch (const testbed::InputError& error) {
-    std::cerr << "testbed: " << error.what() << "\n";
+    testbed::breakProgressLine();
+    std::cerr << "testbed: " << testbed::oneLine(error.what()) << "\n";
     return 2;
   } catch (const std::exception& error) {
-    std::cerr << "testbed: error: " << error.what() << "\n";
+    testbed::breakProgressLine();
+    std::cerr << "testbed: error: " << testbed::oneLine(error.what()) << "\n";
+    return 1;
+  } catch (...) {
+    testbed::breakProgressLine();
+    std::cerr << "testbed: error: an unknown failure\n";
     return 1;
   }
 }

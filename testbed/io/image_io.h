@@ -1,7 +1,7 @@
 #pragma once
 // Image files through OpenImageIO. Pixel rows are top-down (as files store them); GL
-// readbacks are flipped by the caller. Writes go to a temporary name first and are
-// renamed into place by OutputFiles, so an error never leaves a half-written file.
+// readbacks are flipped by the caller. Commands write their images through OutputFiles
+// (output_files.h), which stages and commits them; encodeImage gives it the bytes.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -24,28 +24,11 @@ inline unsigned char quantize8(float v) {
 // PNG/JPEG: 8-bit with values clamped to [0,1] (quantize8); EXR: float32. Throws std::runtime_error
 // naming the file on failure.
 void writeImage(const std::filesystem::path& file, const ImageF& image);
+// The file's bytes in memory, the format chosen by `name`'s extension (.png or .exr).
+std::vector<unsigned char> encodeImage(const std::string& name, const ImageF& image);
 ImageF readImage(const std::filesystem::path& file);
 
-// Collects the files of one command and commits them together: each write goes to
-// "<name>.partial", commit() renames them all; the destructor of an uncommitted set
-// removes the partial files, and the directory too if this set created it.
-class OutputFiles {
- public:
-  explicit OutputFiles(std::filesystem::path directory) : directory_(std::move(directory)) {}
-  ~OutputFiles();
-  OutputFiles(const OutputFiles&) = delete;
-  OutputFiles& operator=(const OutputFiles&) = delete;
-
-  void writeImage(const std::string& name, const ImageF& image);
-  void writeText(const std::string& name, const std::string& text);
-  void commit();
-  const std::filesystem::path& directory() const { return directory_; }
-
- private:
-  std::filesystem::path stage(const std::string& name);
-  std::filesystem::path directory_;
-  std::vector<std::filesystem::path> staged_;
-  bool createdDirectory_ = false;
-};
-
 }  // namespace testbed
+
+// OutputFiles lived here once; code that includes this header for it still finds it.
+#include "testbed/io/output_files.h"  // IWYU pragma: export

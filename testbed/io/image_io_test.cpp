@@ -49,29 +49,6 @@ TEST(ImageIo, PngRoundTripWithinOneStep) {
   std::filesystem::remove_all(dir);
 }
 
-TEST(ImageIo, OutputFilesAppearOnlyOnCommit) {
-  const auto dir = tempDir("commit");
-  {
-    OutputFiles files(dir);
-    files.writeImage("a.exr", gradient(1));
-    files.writeText("a.json", "{}\n");
-    EXPECT_FALSE(std::filesystem::exists(dir / "a.exr"));
-    EXPECT_FALSE(std::filesystem::exists(dir / "a.json"));
-    // Abandoned without commit: the partial files are removed.
-  }
-  EXPECT_FALSE(std::filesystem::exists(dir)) << "the abandoned set created the folder, so it removes it";
-  {
-    OutputFiles files(dir);
-    files.writeImage("b.png", gradient(3));
-    files.writeText("b.json", "{}\n");
-    files.commit();
-  }
-  EXPECT_TRUE(std::filesystem::exists(dir / "b.png"));
-  EXPECT_TRUE(std::filesystem::exists(dir / "b.json"));
-  EXPECT_FALSE(std::filesystem::exists(dir / "b.png.partial"));
-  std::filesystem::remove_all(dir);
-}
-
 TEST(ImageIo, UnreadableFilesThrowNamingThem) {
   try {
     readImage("/nonexistent/x.exr");

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <sstream>
 
 #include "testbed/core/error.h"
+#include "testbed/io/json_input.h"
 
 namespace testbed {
 namespace {
@@ -33,6 +33,14 @@ double number(const json& object, const char* name, const std::string& where) {
   const json& value = field(object, name, where);
   if (!value.is_number()) fail(where + "." + name, "expected a number");
   return value.get<double>();
+}
+
+// Times, error metrics and distances are measured magnitudes: a negative one is a
+// corrupt record, not a huge improvement.
+double nonNegative(const json& object, const char* name, const std::string& where) {
+  const double value = number(object, name, where);
+  if (value < 0) fail(where + "." + name, "expected a non-negative number, got " + std::to_string(value));
+  return value;
 }
 
 std::int64_t count(const json& object, const char* name, const std::string& where) {
@@ -61,17 +69,18 @@ CheckRecord parseRecord(const json& r, const std::string& file, const std::strin
   record.timing = text(r, "timing", where);
   if (record.timing != "gpu" && record.timing != "wall") fail(where + ".timing", "expected \"gpu\" or \"wall\"");
   const char* times = record.timing == "wall" ? "wall_ms" : "gpu_ms";
-  record.frameMs = number(field(r, times, where), "total", where + "." + times);
+  record.frameMs = nonNegative(field(r, times, where), "total", where + "." + times);
   record.memoryBytes = std::uint64_t(count(r, "memory_bytes", where));
 
   const json& error = field(r, "error", where);
   const std::string errorWhere = where + ".error";
   if (!error.is_object()) fail(errorWhere, "expected an object (records from `testbed compare`)");
-  for (const char* name : kPlainMetrics) record.errors.emplace_back(name, number(error, name, errorWhere));
-  record.errors.emplace_back("boundary_px.mean",
-                             number(field(error, "boundary_px", errorWhere), "mean", errorWhere + ".boundary_px"));
+  for (const char* name : kPlainMetrics) record.errors.emplace_back(name, nonNegative(error, name, errorWhere));
+  record.errors.emplace_back("boundary_px.mean", nonNegative(field(error, "boundary_px", errorWhere), "mean",
+                                                             errorWhere + ".boundary_px"));
   std::optional<double> soft;
-  if (error.contains("soft_rmse") && !error["soft_rmse"].is_null()) soft = number(error, "soft_rmse", errorWhere);
+  if (error.contains("soft_rmse") && !error["soft_rmse"].is_null())
+    soft = nonNegative(error, "soft_rmse", errorWhere);
   record.errors.emplace_back("soft_rmse", soft);
   return record;
 }
@@ -116,6 +125,17 @@ std::string findingLine(const Finding& f) {
   return line.str() + "\n";
 }
 
+// Why two matched records have no speed ratio to compare; empty when both have one.
+std::string whyNoRatio(const CheckRecord& b, const CheckRecord& c) {
+  for (const CheckRecord* r : {&b, &c}) {
+    if (r->frameMs == 0) return "its frame time is 0 in " + r->file + " (not a measurement).";
+    if (r->smTimeZero) return "`sm`'s frame time is 0 in " + r->file + " (not a measurement).";
+  }
+  for (const CheckRecord* r : {&b, &c})
+    if (!r->smRatio) return "no `sm` record in the same run (" + r->file + ").";
+  return "";
+}
+
 void addNote(CheckReport& report, const std::string& note) {
   if (std::find(report.notes.begin(), report.notes.end(), note) == report.notes.end()) report.notes.push_back(note);
 }
@@ -141,7 +161,9 @@ std::vector<CheckRecord> parseCheckRecords(const json& records, const std::strin
     if (r.technique == "sm") smMs[setupKey(r)] = r.frameMs;
   for (auto& r : parsed) {
     const auto it = smMs.find(setupKey(r));
-    if (it != smMs.end() && it->second > 0) r.smRatio = r.frameMs / it->second;
+    if (it == smMs.end()) continue;
+    if (it->second > 0) r.smRatio = r.frameMs / it->second;
+    else r.smTimeZero = true;
   }
   return parsed;
 }
@@ -164,14 +186,7 @@ std::vector<CheckRecord> loadCheckRecords(const std::filesystem::path& path, con
   std::vector<CheckRecord> all;
   std::map<std::string, std::string> seen;  // key → file, so one setup is never counted twice
   for (const auto& file : files) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw InputError(file.string() + ": cannot read");
-    json records;
-    try {
-      records = json::parse(in);
-    } catch (const json::parse_error& e) {
-      throw InputError(file.string() + ": not valid JSON: " + e.what());
-    }
+    const json records = readJsonInput(file);  // regular files only, size-capped, strict
     for (auto& r : parseCheckRecords(records, file.string())) {
       const auto [it, fresh] = seen.emplace(r.key(), r.file);
       if (!fresh) throw InputError(r.file + ": " + label(r) + " appears twice (also in " + it->second + ")");
@@ -226,9 +241,8 @@ CheckReport compareRecords(const std::vector<CheckRecord>& baseline, const std::
       } else if (b.timing != c.timing) {
         addNote(report, "speed not compared where the timing source differs (baseline " + b.timing + ", current " +
                             c.timing + ").");
-      } else if (!b.smRatio || !c.smRatio) {
-        addNote(report, "speed not compared for " + label(b) + ": no `sm` record in the same run (" +
-                            (b.smRatio ? c.file : b.file) + ").");
+      } else if (const std::string why = whyNoRatio(b, c); !why.empty()) {
+        addNote(report, "speed not compared for " + label(b) + ": " + why);
       } else {
         // A ratio above baseline × (1 + tol) is slower; below baseline / (1 + tol) faster (symmetric).
         const double bRatio = *b.smRatio, cRatio = *c.smRatio;

@@ -19,6 +19,7 @@ struct CheckRecord {
   int width = 0, height = 0, shadowMap = 0;
   double frameMs = 0;             // gpu_ms or wall_ms total, as `timing` says
   std::optional<double> smRatio;  // frameMs over `sm`'s in the same file and setup
+  bool smTimeZero = false;        // `sm`'s time in the same file and setup is 0: no ratio
   std::uint64_t memoryBytes = 0;
   // The checked error metrics in report order; nullopt where the record has none (soft_rmse).
   std::vector<std::pair<std::string, std::optional<double>>> errors;

@@ -1,6 +1,7 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -11,7 +12,10 @@
 namespace testbed {
 namespace {
 
+// Each image tile fits a kTileWidth × kTileMaxHeight box whatever the screen's aspect
+// ratio, so the grid's size is bounded by the number of techniques alone.
 constexpr int kTileWidth = 480;
+constexpr int kTileMaxHeight = 480;
 constexpr int kWindow = 48;       // close-up window in screen pixels
 constexpr int kZoom = 5;          // nearest-neighbour magnification of the close-up
 constexpr int kLabelHeight = 26;
@@ -96,7 +100,9 @@ std::pair<int, int> worstWindow(const ImageF& visibility, const ImageF& groundTr
 
 ImageF comparisonGrid(const Comparison& c) {
   const ImageF& gt = c.groundTruthVisibility;
-  const int tileHeight = std::max(1, kTileWidth * gt.height / gt.width);
+  const double fit = std::min(double(kTileWidth) / gt.width, double(kTileMaxHeight) / gt.height);
+  const int tileWidth = std::clamp(int(std::lround(gt.width * fit)), 1, kTileWidth);
+  const int tileHeight = std::clamp(int(std::lround(gt.height * fit)), 1, kTileMaxHeight);
   const int zoomed = kWindow * kZoom;
   const int rowHeight = kLabelHeight + std::max(tileHeight, zoomed) + kGap;
   const int width = 2 * kTileWidth + 2 * zoomed + 5 * kGap;
@@ -114,10 +120,10 @@ ImageF comparisonGrid(const Comparison& c) {
     OIIO::ImageBufAlgo::render_text(canvas, kGap, top + 18, label(c, entry), 16, kFont, white);
     const int imagesTop = top + kLabelHeight;
     const auto [wx, wy] = worstWindow(entry.visibility, gt, kWindow);
-    paste(canvas, scaled(entry.shaded, kTileWidth, tileHeight), kGap, imagesTop);
-    paste(canvas, scaled(entry.heatMap, kTileWidth, tileHeight), 2 * kGap + kTileWidth, imagesTop);
+    paste(canvas, scaled(entry.shaded, tileWidth, tileHeight), kGap, imagesTop);
+    paste(canvas, scaled(entry.heatMap, tileWidth, tileHeight), 2 * kGap + kTileWidth, imagesTop);
     // Mark the close-up window on the heat map.
-    const float sx = float(kTileWidth) / float(gt.width), sy = float(tileHeight) / float(gt.height);
+    const float sx = float(tileWidth) / float(gt.width), sy = float(tileHeight) / float(gt.height);
     const int bx = 2 * kGap + kTileWidth + int(wx * sx), by = imagesTop + int(wy * sy);
     OIIO::ImageBufAlgo::render_box(canvas, bx, by, bx + int(kWindow * sx), by + int(kWindow * sy), yellow);
     const int closeLeft = 3 * kGap + 2 * kTileWidth;

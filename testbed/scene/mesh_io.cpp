@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -22,6 +23,7 @@
 #include <vector>
 
 #include "testbed/core/error.h"
+#include "testbed/io/input_file.h"
 #include "testbed/scene/scene.h"
 
 namespace testbed {
@@ -172,9 +174,17 @@ void checkOff(const fs::path& file, std::uint64_t size) {
   }
 }
 
+// A whole token that parses as a finite float.
+bool finiteNumber(const std::string& token) {
+  char* end = nullptr;
+  const float x = std::strtof(token.c_str(), &end);
+  return !token.empty() && *end == '\0' && std::isfinite(x);
+}
+
 struct PlyProperty {
   int countBytes = 0;  // 0 for a scalar, else the size of a list's length prefix
   int valueBytes = 1;
+  bool coordinate = false;  // a vertex's x, y or z
 };
 struct PlyElement {
   std::string name;
@@ -241,6 +251,8 @@ void checkPly(const fs::path& file, std::uint64_t size) {
         }
       } else {
         property.valueBytes = std::max(plyTypeSize(a), plyTypeSize(b));  // either order occurs
+        const std::string& name = plyTypeSize(a) ? b : a;
+        property.coordinate = elements.back().name == "vertex" && (name == "x" || name == "y" || name == "z");
       }
       if (property.valueBytes == 0 || (a == "list" && property.countBytes == 0)) {
         fail(file,
@@ -287,6 +299,9 @@ void checkPly(const fs::path& file, std::uint64_t size) {
           }
           for (std::uint64_t v = 0; v < values; ++v) {
             if (!(in >> token)) bad("the file ends early");
+            // OpenMesh would read "nan" or "1e39" without complaint (binary values are
+            // caught by the finite check after reading).
+            if (p.coordinate && !finiteNumber(token)) bad("coordinate " + quote(token) + " is not a finite number");
           }
           continue;
         }
@@ -326,22 +341,52 @@ void checkVertexLines(const fs::path& file, const std::string& keyword) {
     for (int i = 0; i < 3; ++i) {
       word.clear();
       words >> word;
-      char* end = nullptr;
-      const float x = std::strtof(word.c_str(), &end);
-      if (word.empty() || *end != '\0' || !std::isfinite(x)) {
-        fail(file, "line " + std::to_string(number) + ": expected 3 finite vertex coordinates");
-      }
+      if (!finiteNumber(word)) fail(file, "line " + std::to_string(number) + ": expected 3 finite vertex coordinates");
     }
   }
 }
 
-bool isBinaryStl(const fs::path& file, std::uint64_t size) {
+// Binary STL: 80-byte header, a count, then 50 bytes per triangle (normal, 3 vertices,
+// attribute). OpenMesh drops a triangle with a NaN corner without a word, which made a
+// file of them "a file with no triangles"; the corners are checked here instead.
+void checkBinaryStl(const fs::path& file, std::uint64_t triangles) {
+  std::ifstream in(file, std::ios::binary);
+  in.seekg(84);
+  char record[50];
+  for (std::uint64_t t = 0; t < triangles; ++t) {
+    if (!in.read(record, sizeof record)) fail(file, "triangle " + std::to_string(t) + ": the file ends early");
+    for (int i = 3; i < 12; ++i) {  // the 9 corner coordinates after the normal
+      float x;
+      std::memcpy(&x, record + 4 * i, sizeof x);
+      if (!std::isfinite(x)) fail(file, "triangle " + std::to_string(t) + " has a non-finite vertex coordinate");
+    }
+  }
+}
+
+// A UTF-16 file (with or without a byte-order mark) is text OpenMesh cannot read; without
+// this it reads as a file without triangles. OFF and PLY may have binary bodies: only
+// their first line is text for sure.
+void checkTextEncoding(const fs::path& file, bool firstLineOnly) {
+  std::ifstream in(file, std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(head.data(), std::streamsize(head.size()));
+  head.resize(std::size_t(in.gcount()));
+  if (head.size() >= 2 && ((head[0] == '\xff' && head[1] == '\xfe') || (head[0] == '\xfe' && head[1] == '\xff')))
+    fail(file, "is UTF-16 text (byte-order mark); save it as ASCII or UTF-8");
+  if (firstLineOnly) head = head.substr(0, head.find('\n'));
+  if (head.find('\0') != std::string::npos)
+    fail(file, "holds NUL bytes where text is expected (UTF-16 text, or not a mesh file)");
+}
+
+// The triangle count of a binary STL, nullopt for ASCII STL.
+std::optional<std::uint64_t> binaryStlTriangles(const fs::path& file, std::uint64_t size) {
   std::ifstream in(file, std::ios::binary);
   unsigned char head[84] = {};
-  if (size < 84 || !in.read(reinterpret_cast<char*>(head), 84)) return false;
+  if (size < 84 || !in.read(reinterpret_cast<char*>(head), 84)) return std::nullopt;
   const std::uint64_t triangles = std::uint64_t(head[80]) | std::uint64_t(head[81]) << 8 |
                                   std::uint64_t(head[82]) << 16 | std::uint64_t(head[83]) << 24;
-  return size == 84 + 50 * triangles;  // the size test OpenMesh uses as well
+  if (size != 84 + 50 * triangles) return std::nullopt;  // the size test OpenMesh uses as well
+  return triangles;
 }
 
 // OpenMesh reports through omerr/omlog/omout and, in places, straight to std::cerr; a bad
@@ -386,13 +431,15 @@ TriMesh readMeshFile(const fs::path& file) {
   if (ext != ".off" && ext != ".obj" && ext != ".ply" && ext != ".stl") {
     fail(file, "unsupported mesh format \"" + ext + "\" (expected .off, .obj, .ply or .stl)");
   }
-  const std::uintmax_t size = fs::file_size(file, ec);
-  if (ec) fail(file, "cannot read the file size: " + ec.message());
+  const std::uint64_t size = checkInputFile(file, kMaxMeshFileBytes);
   if (size == 0) fail(file, "file is empty");
+  const auto stlTriangles = ext == ".stl" ? binaryStlTriangles(file, size) : std::nullopt;
+  if (!stlTriangles) checkTextEncoding(file, ext == ".off" || ext == ".ply");
   if (ext == ".off") checkOff(file, size);
   if (ext == ".ply") checkPly(file, size);
   if (ext == ".obj") checkVertexLines(file, "v");
-  if (ext == ".stl" && !isBinaryStl(file, size)) checkVertexLines(file, "vertex");
+  if (ext == ".stl" && !stlTriangles) checkVertexLines(file, "vertex");
+  if (stlTriangles) checkBinaryStl(file, *stlTriangles);
 
   TriMesh mesh;
   {

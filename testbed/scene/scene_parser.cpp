@@ -9,8 +9,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -20,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "testbed/core/error.h"
+#include "testbed/io/json_input.h"
 #include "testbed/scene/primitives.h"
 #include "testbed/scene/scene.h"
 #include "testbed/scene/view.h"
@@ -36,11 +35,7 @@ constexpr std::uint64_t kMaxSceneTriangles = 20'000'000;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // A value for "got ...": one short line whatever the input holds.
-std::string show(const json& value) {
-  std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);
-  if (text.size() > 40) text = text.substr(0, 37) + "...";
-  return text;
-}
+std::string show(const json& value) { return briefJson(value); }
 
 std::string show(double value) {
   std::ostringstream out;
@@ -57,14 +52,8 @@ std::string join(const Names& names) {
 // The JSON key path of a value: "objects[2].mesh", "camera.eye[1]".
 struct Key {
   std::string path;
-  Key operator/(const std::string& name) const {
-    const bool plain = !name.empty() && std::all_of(name.begin(), name.end(), [](unsigned char c) {
-      return std::isalnum(c) || c == '_' || c == '-';
-    });
-    if (!plain) return {path + "[" + show(json(name)) + "]"};  // keeps odd keys on one line
-    return {path.empty() ? name : path + "." + name};
-  }
-  Key operator[](std::size_t index) const { return {path + "[" + std::to_string(index) + "]"}; }
+  Key operator/(const std::string& name) const { return {keyPath(path, name)}; }
+  Key operator[](std::size_t index) const { return {indexPath(path, index)}; }
 };
 
 class Parser {
@@ -215,13 +204,50 @@ class Parser {
     camera.fovYDegrees = optional(value, key, "fov_y", 45.0, 0.0, 180.0);
     nearFar(value, key, camera.nearPlane, camera.farPlane);
     const glm::vec3 view = camera.target - camera.eye;
-    if (glm::length(view) == 0.0f) fail(key / "target", "must differ from camera.eye");
+    if (camera.eye == camera.target) fail(key / "target", "must differ from camera.eye");
+    checkCameraPrecision(camera, value, key);
     const float upLength = glm::length(camera.up);
     if (upLength == 0.0f ||
         glm::length(glm::cross(camera.up / upLength, glm::normalize(view))) < 1e-4f) {
       fail(key / "up", "must be non-zero and not parallel to the view direction");
     }
     return camera;
+  }
+
+  // Values that pass as numbers but whose derived quantities degenerate in the renderer's
+  // float arithmetic, giving an all-background image or a late failure instead of an error.
+  void checkCameraPrecision(const CameraDesc& camera, const json& given, const Key& key) const {
+    // As written in the file: the float kept may print rounded (179.9999 as 180).
+    auto written = [&](const char* name, float kept) { return find(given, name) ? show(*find(given, name)) : show(kept); };
+    constexpr float kMinFov = 0.1f, kMaxFov = 179.0f;
+    if (camera.fovYDegrees < kMinFov || camera.fovYDegrees > kMaxFov)
+      fail(key / "fov_y", "must be in [" + show(kMinFov) + ", " + show(kMaxFov) + "] degrees, got " +
+                              written("fov_y", camera.fovYDegrees) +
+                              " (beyond, pixels are finer than float precision or the image collapses to a point)");
+    const float n = camera.nearPlane, f = camera.farPlane;
+    constexpr float kMaxDepthRatio = 1e7f, kMinDepthRange = 1e-3f;
+    if (f / n > kMaxDepthRatio)
+      fail(key / "far", "far/near is " + show(f / n) + ", more than " + show(kMaxDepthRatio) +
+                            " (the depth buffer could not tell surfaces apart)");
+    if ((f - n) / f < kMinDepthRange)
+      fail(key / "far", "must exceed near (" + show(n) + ") by at least " + show(kMinDepthRange * 100) +
+                            "% of far, got " + written("far", f) + " (no depth precision is left between them)");
+    // The projection as the renderer builds it, in float: near must map to depth -1 and
+    // far to +1 (products such as 2·far·near overflow or underflow for extreme planes).
+    const glm::mat4 projection = glm::perspective(glm::radians(camera.fovYDegrees), 1.0f, n, f);
+    auto ndcDepth = [&](float distance) {
+      const glm::vec4 clip = projection * glm::vec4(0.0f, 0.0f, -distance, 1.0f);
+      return clip.z / clip.w;
+    };
+    if (!(std::abs(ndcDepth(n) + 1.0f) < 1e-3f && std::abs(ndcDepth(f) - 1.0f) < 1e-3f))
+      fail(key / "far", "near " + show(n) + " and far " + show(f) +
+                            " overflow the float projection matrix (use planes nearer to the scene's scale)");
+    // A view direction from two points that differ only in their last bits is noise.
+    const glm::vec3 view = camera.target - camera.eye;
+    const float scale = std::max(glm::length(camera.eye), glm::length(camera.target));
+    if (!(glm::length(view) > 1e-5f * scale) || !std::isnormal(glm::dot(view, view)))
+      fail(key / "target", "is only " + show(glm::length(glm::dvec3(camera.target) - glm::dvec3(camera.eye))) +
+                               " from camera.eye: too close to give a view direction in float precision");
   }
 
   LightDesc light(const json& value, const Key& key) const {
@@ -491,59 +517,8 @@ Scene parseScene(const json& document, const fs::path& file) {
 
 Scene loadScene(const fs::path& file) {
   std::error_code ec;
-  if (fs::is_directory(file, ec))
-    throw InputError(file.string() + ": is a folder, not a scene file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": cannot open scene file");
-  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) throw InputError(file.string() + ": cannot read scene file");
-
-  // nlohmann refuses a number that overflows a double (1e999) while parsing, before there
-  // is a value to check; following the key path during the parse lets that error name it.
-  struct Frame {
-    bool array;
-    std::string key;
-    std::size_t elements = 0;
-  };
-  std::vector<Frame> frames;
-  const json::parser_callback_t track = [&frames](int, json::parse_event_t event, json& parsed) {
-    using E = json::parse_event_t;
-    const bool opens = event == E::object_start || event == E::array_start;
-    if (!frames.empty() && frames.back().array && (opens || event == E::value))
-      ++frames.back().elements;
-    if (opens) frames.push_back({event == E::array_start, {}});
-    if (event == E::object_end || event == E::array_end) frames.pop_back();
-    if (event == E::key) frames.back().key = parsed.get<std::string>();
-    return true;
-  };
-  json document;
-  try {
-    document = json::parse(text, track);
-  } catch (const json::out_of_range&) {
-    Key key;
-    for (std::size_t i = 0; i < frames.size(); ++i) {
-      // In the innermost array the failing element has not been counted yet.
-      const bool innermost = i + 1 == frames.size();
-      key = frames[i].array ? key[frames[i].elements - (innermost ? 0 : 1)] : key / frames[i].key;
-    }
-    Parser(file).fail(key, "not a finite number");
-  } catch (const json::exception& e) {
-    // nlohmann says "[json.exception.parse_error.101] parse error at line 3, column 5: <detail>".
-    const std::string what = e.what();
-    const auto at = what.find("line ");
-    const auto colon = what.find(": ", at == std::string::npos ? 0 : at);
-    std::string where = "JSON syntax error";
-    std::string detail = what;
-    if (at != std::string::npos && colon != std::string::npos) {
-      where = what.substr(at, colon - at) + ": JSON syntax error";
-      detail = what.substr(colon + 2);
-    }
-    std::string message = file.string() + ": " + where + ": " + detail;
-    std::replace_if(
-        message.begin(), message.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
-    throw InputError(message);
-  }
-  return parseScene(document, file);
+  if (fs::is_directory(file, ec)) throw InputError(file.string() + ": is a folder, not a scene file");
+  return parseScene(readJsonInput(file), file);
 }
 
 }  // namespace testbed

@@ -273,7 +273,7 @@ TEST_F(SceneParser, BrokenMeshNamesSceneKeyAndMeshFile) {
 }
 
 TEST_F(SceneParser, MissingFileAndSyntaxErrors) {
-  expectError(dir_ / "missing.json", "", "cannot open scene file");
+  expectError(dir_ / "missing.json", "", "no such file");
   expectError(write("syntax.json", "{\n  \"name\": \"x\",\n  oops\n}\n"), "",
               "line 3, column 3: JSON syntax error");
   expectError(write("empty.json", ""), "", "JSON syntax error");

@@ -1,0 +1,40 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "testbed/report/comparison.h"
+
+namespace testbed {
+namespace {
+
+ImageF constant(int width, int height, int channels, float value) {
+  return ImageF{width, height, channels, std::vector<float>(std::size_t(width) * height * channels, value)};
+}
+
+nlohmann::json record(const std::string& id) {
+  return {{"technique", id},
+          {"timing", "wall"},
+          {"wall_ms", {{"total", 1.0}}},
+          {"gpu_ms", {{"total", 1.0}}},
+          {"error", {{"mismatch_pct", 0.0}, {"boundary_px", {{"mean", 0.0}}}, {"leak_pct", 0.0}}}};
+}
+
+// The grid's size follows the number of techniques, never the screen's aspect ratio: a
+// 2x256 or 1x2048 screen once made tiles 61 440 or 983 040 pixels tall.
+TEST(ReportGrid, SizeIsBoundedForAnyAspectRatio) {
+  for (const auto [w, h] : {std::pair{2, 256}, std::pair{1, 2048}, std::pair{2048, 1}, std::pair{160, 90}}) {
+    SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h));
+    Comparison c;
+    c.scene = "s";
+    c.groundTruth = record("groundtruth");
+    c.groundTruthVisibility = constant(w, h, 1, 1.0f);
+    for (const char* id : {"sm", "pcf"})
+      c.entries.push_back({record(id), constant(w, h, 1, 1.0f), constant(w, h, 3, 0.5f), constant(w, h, 3, 0.2f)});
+    const ImageF grid = comparisonGrid(c);
+    EXPECT_LE(grid.width, 2000);
+    EXPECT_LE(grid.height, 2 * (26 + 480 + 6) + 6 + 26);
+  }
+}
+
+}  // namespace
+}  // namespace testbed
