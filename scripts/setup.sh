@@ -15,6 +15,7 @@ packages=(
   python3-glad libglm-dev libopenmesh-dev libopenimageio-dev openimageio-tools
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   libembree-dev libcgal-demo assimp-testmodels fonts-dejavu-core
+  python3-matplotlib slurm-wlm munge
 )
 
 log() { echo "setup: $*" >&2; }

@@ -15,7 +15,9 @@ int main(int argc, char** argv) {
                                                         testbed::addRenderCommand(app),
                                                         testbed::addGroundTruthCommand(app),
                                                         testbed::addCompareCommand(app),
-                                                        testbed::addCheckCommand(app)};
+                                                        testbed::addCheckCommand(app),
+                                                        testbed::addSweepCommand(app),
+                                                        testbed::addMergeCommand(app)};
   // CLI11 would only say "a subcommand is required" for a mistyped one: name it instead.
   if (argc > 1 && argv[1][0] != '-') {
     std::string known;

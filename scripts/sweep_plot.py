@@ -1,0 +1,64 @@
+#!/usr/bin/env python3
+"""Plots one table written by `testbed sweep` / `testbed merge` (TABLE.json) as
+TABLE.png and TABLE.svg: our figures beside the paper's, one line per row over the
+table's columns, and, when the table has a shadow-mapping row, both as cost relative to
+shadow mapping (on a software rasterizer only these ratios compare with a paper's GPU).
+Uses Debian's python3-matplotlib; run by the testbed itself after writing the table."""
+import json
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")  # headless
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def series(rows, key):
+    for row in rows:
+        values = row[key]
+        if any(v is not None for v in values):
+            name = (row["group"] + " " if row["group"] else "") + row["label"]
+            yield name, [float("nan") if v is None else v for v in values]
+
+
+def panel(axis, table, key, title, ylabel):
+    x = list(range(len(table["columns"])))
+    for name, values in series(table["rows"], key):
+        axis.plot(x, values, marker="o", label=name)
+    axis.set_xticks(x)
+    axis.set_xticklabels(table["columns"])
+    axis.set_title(title, fontsize=10)
+    axis.set_ylabel(ylabel)
+    axis.grid(alpha=0.3)
+
+
+def main(path):
+    with open(path, encoding="utf-8") as f:
+        table = json.load(f)
+    unit = table["unit"]
+    keys = [("ours", "ours (" + (table["backend"] or "no records") + ")", unit),
+            ("paper", "paper", unit)]
+    if table["has_ratios"]:
+        keys += [("ours_ratio", "ours, cost × SM", "× SM"), ("paper_ratio", "paper, cost × SM", "× SM")]
+    rows = (len(keys) + 1) // 2
+    figure, axes = plt.subplots(rows, 2, figsize=(12, 4.2 * rows), squeeze=False)
+    for axis, (key, title, ylabel) in zip(axes.flat, keys):
+        panel(axis, table, key, title, ylabel)
+    handles, labels = axes.flat[0].get_legend_handles_labels()
+    if not handles:
+        handles, labels = axes.flat[1].get_legend_handles_labels()
+    figure.legend(handles, labels, loc="lower center", ncol=4, fontsize=8)
+    figure.suptitle((table["title"] or table["name"]) + "\n" + table["citation"], fontsize=10)
+    figure.tight_layout(rect=(0, 0.04 + 0.025 * ((len(labels) + 3) // 4), 1, 0.93))
+    stem = os.path.splitext(path)[0]
+    for extension in ("png", "svg"):
+        partial = stem + ".partial." + extension
+        figure.savefig(partial, dpi=110)
+        os.replace(partial, stem + "." + extension)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit("usage: sweep_plot.py TABLE.json")
+    main(sys.argv[1])
