@@ -11,21 +11,29 @@ import sys
 import matplotlib
 
 matplotlib.use("Agg")  # headless
+import matplotlib.lines  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 
 
-def series(rows, key):
-    for row in rows:
-        values = row[key]
-        if any(v is not None for v in values):
-            name = (row["group"] + " " if row["group"] else "") + row["label"]
-            yield name, [float("nan") if v is None else v for v in values]
+def name(row):
+    return (row["group"] + " " if row["group"] else "") + row["label"]
+
+
+def color(index):
+    palette = plt.get_cmap("tab20")
+    return palette(index % palette.N)
 
 
 def panel(axis, table, key, title, ylabel):
+    """One line per row; a row keeps its colour in every panel."""
     x = list(range(len(table["columns"])))
-    for name, values in series(table["rows"], key):
-        axis.plot(x, values, marker="o", label=name)
+    for index, row in enumerate(table["rows"]):
+        values = [float("nan") if v is None else v for v in row[key]]
+        if any(v == v for v in values):  # not all NaN
+            axis.plot(x, values, marker="o", color=color(index))
+    finite = [v for row in table["rows"] for v in row[key] if v is not None and v > 0]
+    if finite and max(finite) / min(finite) > 30:  # scenes of very different cost share the panel
+        axis.set_yscale("log")
     axis.set_xticks(x)
     axis.set_xticklabels(table["columns"])
     axis.set_title(title, fontsize=10)
@@ -45,9 +53,8 @@ def main(path):
     figure, axes = plt.subplots(rows, 2, figsize=(12, 4.2 * rows), squeeze=False)
     for axis, (key, title, ylabel) in zip(axes.flat, keys):
         panel(axis, table, key, title, ylabel)
-    handles, labels = axes.flat[0].get_legend_handles_labels()
-    if not handles:
-        handles, labels = axes.flat[1].get_legend_handles_labels()
+    handles = [matplotlib.lines.Line2D([], [], color=color(i), marker="o") for i in range(len(table["rows"]))]
+    labels = [name(row) for row in table["rows"]]
     figure.legend(handles, labels, loc="lower center", ncol=4, fontsize=8)
     figure.suptitle((table["title"] or table["name"]) + "\n" + table["citation"], fontsize=10)
     figure.tight_layout(rect=(0, 0.04 + 0.025 * ((len(labels) + 3) // 4), 1, 0.93))

@@ -55,8 +55,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
 
   return [command, options]() {
     if (!command->parsed()) return -1;
-    const RenderSettings defaults = options->common.settings();  // checks the text options
-    (void)defaults;
+    options->common.settings();  // checks --out and the text options before anything runs
     // Options given on the command line override every level of the spec.
     SweepOverrides overrides;
     if (command->count("--size")) overrides.size = options->common.size;

@@ -118,14 +118,14 @@ void stageSweepReport(OutputFiles& files, const SweepSpec& spec, const SweepPlan
       const auto it = figureImages.find(cell);
       if (it == figureImages.end()) continue;
       std::string label = plan.cells[cell].technique;
-      for (const auto& [k, v] : plan.cells[cell].params) label += " " + k + "=" + v;
+      for (const auto& [k, v] : plan.cells[cell].params) label.append(" ").append(k).append("=").append(v);
       tiles.push_back({label, &it->second.visibility, &it->second.shaded});
     }
     const FigureImages& gt = figureImages.at(truth);
     const CloseUpFigure figure = closeUpFigure({"shadow volumes (ground truth)", &gt.visibility, &gt.shaded}, tiles,
                                                spec.figure.window);
     std::string name = spec.name + "-closeup-" + plan.cells[truth].scene;
-    while (!names.insert(name).second) name += "-" + std::to_string(truth);
+    while (!names.insert(name).second) name.append("-").append(std::to_string(truth));
     files.writeImage(name + ".png", figure.image);
   }
 }
