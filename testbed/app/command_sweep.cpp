@@ -17,6 +17,7 @@
 #include "testbed/core/error.h"
 #include "testbed/gl/context.h"
 #include "testbed/metrics/metrics.h"
+#include "testbed/scene/primitives.h"
 #include "testbed/sweep/sweep_scene.h"
 
 namespace testbed {
@@ -36,6 +37,16 @@ const RegisteredTechnique& techniqueOf(const SweepCell& cell) {
 
 ParameterSet parametersOf(const SweepCell& cell) {
   return resolveParameters(cell.technique, techniqueOf(cell).info->parameters, cell.params);
+}
+
+// FrameRunner times the G-buffer once, as it builds it: a first runner on a one-plane
+// scene compiles the G-buffer's shaders so that the first set-up's gbuffer_ms (part of
+// every whole-frame figure) does not hold the compilation.
+void warmUpGBuffer(const RenderSettings& settings) {
+  Scene scene;
+  scene.name = "warm-up";
+  scene.objects.push_back({"warm-up plane", makePlane(1, 1)});
+  FrameRunner warm(scene, {{16, 16}, 16, settings.depthFormat, 1});
 }
 
 }  // namespace
@@ -99,6 +110,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
     std::map<std::size_t, FigureImages> figureImages;
     std::size_t steps = 0, step = 0;
     for (const auto& key : frames) steps += owned[key].size() + (shard.owns(plan.cells[owned[key].front()].truthCell) ? 0 : 1);
+    if (!frames.empty()) warmUpGBuffer({});
     const auto start = Clock::now();
     auto progress = [&](const SweepCell& cell, const std::string& what) {
       const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();

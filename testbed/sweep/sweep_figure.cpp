@@ -89,7 +89,7 @@ CloseUpFigure closeUpFigure(const CloseUpTile& truth, const std::vector<CloseUpT
   const int top = kGap + kLabel;
   OIIO::ImageBufAlgo::paste(canvas, kGap, top, 0, 0, overview);
   OIIO::ImageBufAlgo::render_text(canvas, kGap, top - 6,
-                                  "window " + std::to_string(win[2]) + "² px at (" + std::to_string(win[0]) + ", " +
+                                  "window " + std::to_string(win[2]) + "x" + std::to_string(win[2]) + " px at (" + std::to_string(win[0]) + ", " +
                                       std::to_string(win[1]) + ")",
                                   14, kFont, white);
   int x = 2 * kGap + overviewWidth;

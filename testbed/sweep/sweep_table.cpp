@@ -3,6 +3,7 @@
 #include <cmath>
 #include <algorithm>
 #include <cstdio>
+#include <set>
 #include <sstream>
 
 #include "testbed/core/error.h"
@@ -159,13 +160,10 @@ std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& heade
         md << " " << number(row.oursRatio[c], 2) << " | " << number(row.paperRatio[c], 2) << " |";
     md << "\n";
   }
-  bool anyNotMeasured = false;
+  std::set<std::string> footnotes;  // each row label and reason once, however many groups repeat it
   for (const auto& row : table.rows)
-    if (!row.notMeasured.empty()) {
-      if (!anyNotMeasured) md << "\n";
-      anyNotMeasured = true;
-      md << "† " << row.label << ": " << row.notMeasured << "\n";
-    }
+    if (!row.notMeasured.empty() && footnotes.insert(row.label + ": " + row.notMeasured).second)
+      md << (footnotes.size() == 1 ? "\n" : "") << "† " << row.label << ": " << row.notMeasured << "\n";
   return md.str();
 }
 
