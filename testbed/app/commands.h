@@ -48,5 +48,8 @@ CommandRunner addViewCommand(CLI::App& app);
 #endif
 // `check`: exit 0 no regression, 3 regressions found, 2 bad input (README "Regression check").
 CommandRunner addCheckCommand(CLI::App& app);
+// `sweep` and `merge`: paper-style tables from a spec, optionally in shards (README "Paper runs").
+CommandRunner addSweepCommand(CLI::App& app);
+CommandRunner addMergeCommand(CLI::App& app);
 
 }  // namespace testbed

@@ -16,7 +16,9 @@ int main(int argc, char** argv) {
                                                   testbed::addRenderCommand(app),
                                                   testbed::addGroundTruthCommand(app),
                                                   testbed::addCompareCommand(app),
-                                                  testbed::addCheckCommand(app)};
+                                                  testbed::addCheckCommand(app),
+                                                  testbed::addSweepCommand(app),
+                                                  testbed::addMergeCommand(app)};
 #ifdef TESTBED_WITH_VIEWER
   commands.push_back(testbed::addViewCommand(app));
 #endif

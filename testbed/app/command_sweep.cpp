@@ -1,0 +1,194 @@
+// `testbed sweep --spec FILE [--shard K/N] [common overrides] --out DIR`: runs a paper
+// table's cells (README "Paper runs") through the same frame harness as `compare`, and
+// writes records.json (every record, as compare's metrics.json, each with its "cell"),
+// sweep.json (what the shard is: spec, build, shard, machine, backend) and spec.json; a
+// whole run (no --shard, or 1/1) also writes the tables, plots and close-up figure.
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <set>
+
+#include "groundtruth/shadow_volumes.h"
+#include "testbed/app/commands.h"
+#include "testbed/app/plugins.h"
+#include "testbed/app/sweep_report.h"
+#include "testbed/core/error.h"
+#include "testbed/gl/context.h"
+#include "testbed/metrics/metrics.h"
+#include "testbed/scene/primitives.h"
+#include "testbed/sweep/sweep_scene.h"
+
+namespace testbed {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string minutesSeconds(double seconds) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%d:%02d", int(seconds) / 60, int(seconds) % 60);
+  return text;
+}
+
+const RegisteredTechnique& techniqueOf(const SweepCell& cell) {
+  return cell.technique == kGroundTruthId ? shadowVolumeGroundTruth() : findTechnique(cell.technique);
+}
+
+ParameterSet parametersOf(const SweepCell& cell) {
+  return resolveParameters(cell.technique, techniqueOf(cell).info->parameters, cell.params);
+}
+
+// FrameRunner times the G-buffer once, as it builds it: a first runner on a one-plane
+// scene compiles the G-buffer's shaders so that the first set-up's gbuffer_ms (part of
+// every whole-frame figure) does not hold the compilation.
+void warmUpGBuffer(const RenderSettings& settings) {
+  Scene scene;
+  scene.name = "warm-up";
+  scene.objects.push_back({"warm-up plane", makePlane(1, 1)});
+  FrameRunner warm(scene, {{16, 16}, 16, settings.depthFormat, 1});
+}
+
+}  // namespace
+
+CommandRunner addSweepCommand(CLI::App& app) {
+  struct Options {
+    CommonOptions common;
+    std::string spec, shard = "1/1";
+    bool noPlot = false;
+  };
+  auto options = std::make_shared<Options>();
+  auto* command = app.add_subcommand("sweep", "run a paper table's cells (a spec in paper/), or one shard of them");
+  command->add_option("--spec", options->spec, "sweep spec (JSON)")->required();
+  command->add_option("--shard", options->shard, "run the K-th of N deterministic parts of the cells")->capture_default_str();
+  command->add_flag("--no-plot", options->noPlot, "skip the matplotlib plots");
+  options->common.addTo(*command);
+
+  return [command, options]() {
+    if (!command->parsed()) return -1;
+    options->common.settings();  // checks --out and the text options before anything runs
+    // Options given on the command line override every level of the spec.
+    SweepOverrides overrides;
+    if (command->count("--size")) overrides.size = options->common.size;
+    if (command->count("--shadow-map")) overrides.shadowMap = options->common.shadowMap;
+    if (command->count("--depth-format")) overrides.depthFormat = options->common.depthFormat;
+    if (command->count("--repeat")) overrides.repeat = options->common.repeat;
+    const Shard shard = parseShard(options->shard);
+    loadPlugins(options->common.plugins);
+    const SweepSpec spec = loadSweepSpec(options->spec);
+    const SweepPlan plan = planSweep(spec, overrides);
+
+    // Cells of this shard, grouped by frame set-up (one G-buffer per set-up).
+    std::vector<std::string> frames;
+    std::map<std::string, std::vector<std::size_t>> owned;
+    for (std::size_t i = 0; i < plan.cells.size(); ++i) {
+      if (!shard.owns(i)) continue;
+      const std::string key = plan.cells[i].frameKey();
+      if (!owned.count(key)) frames.push_back(key);
+      owned[key].push_back(i);
+    }
+    // Every scene and parameter set is checked before the first frame is rendered.
+    std::map<std::string, Scene> scenes;
+    std::map<std::size_t, ParameterSet> parameters;
+    for (const auto& key : frames) {
+      const SweepCell& first = plan.cells[owned[key].front()];
+      const std::string sceneKey = first.scene + "|" + (first.subdivide ? std::to_string(*first.subdivide) : "-");
+      if (!scenes.count(sceneKey)) scenes.emplace(sceneKey, loadSweepScene(spec.scenes.at(first.scene), first.subdivide));
+      for (std::size_t i : owned[key]) parameters.emplace(i, parametersOf(plan.cells[i]));
+    }
+    auto context = createContext(options->common.backend);
+    const std::string backend = context->description();
+    for (const auto& key : frames) {
+      const SweepCell& c = plan.cells[owned[key].front()];
+      validateSettings({parseSize(c.size), c.shadowMap, parseDepthFormat(c.depthFormat), plan.repeat});
+    }
+    const std::vector<std::size_t> figure = figureCells(spec, plan);
+    const std::set<std::size_t> figureSet(figure.begin(), figure.end());
+
+    OutputFiles files(options->common.out);
+    std::vector<nlohmann::json> records;
+    std::map<std::size_t, FigureImages> figureImages;
+    std::size_t steps = 0, step = 0;
+    for (const auto& key : frames) steps += owned[key].size() + (shard.owns(plan.cells[owned[key].front()].truthCell) ? 0 : 1);
+    if (!frames.empty()) warmUpGBuffer({});
+    const auto start = Clock::now();
+    auto progress = [&](const SweepCell& cell, const std::string& what) {
+      const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+      std::cerr << "[" << ++step << "/" << steps << "] " << what << " on " << cell.scene << " (" << cell.size << ", map "
+                << cell.shadowMap << "², depth " << cell.depthFormat << ")";
+      if (step > 1) std::cerr << ", ETA " << minutesSeconds(elapsed / double(step - 1) * double(steps - step + 1));
+      std::cerr << std::flush;
+    };
+    for (const auto& key : frames) {
+      const SweepCell& first = plan.cells[owned[key].front()];
+      const Scene& scene = scenes.at(first.scene + "|" + (first.subdivide ? std::to_string(*first.subdivide) : "-"));
+      FrameRunner runner(scene, {parseSize(first.size), first.shadowMap, parseDepthFormat(first.depthFormat), plan.repeat});
+      auto save = [&](std::size_t cell, const TechniqueRun& run, nlohmann::json record) {
+        record["cell"] = cell;
+        if (shard.owns(cell)) records.push_back(record);
+        if (figureSet.count(cell) && shard.owns(cell)) {
+          FigureImages images{run.visibility, runner.shade(run.visibility)};
+          if (shard.count > 1) {  // merge composes the figure from the shards' images
+            files.writeImage(figureFileName(cell, "exr"), images.visibility);
+            files.writeImage(figureFileName(cell, "png"), images.shaded);
+          }
+          figureImages.emplace(cell, std::move(images));
+        }
+      };
+      // The ground truth first: every technique's errors are taken against it.
+      const std::size_t truthCell = first.truthCell;
+      progress(first, shard.owns(truthCell) ? "groundtruth" : "groundtruth (reference for the errors)");
+      const TechniqueRun truth = runner.run(shadowVolumeGroundTruth(), resolveParameters(kGroundTruthId, {}, {}));
+      nlohmann::json truthRecord = makeRecord(truth, runner, backend);
+      truthRecord["error"] = toJson(computeErrorMetrics(truth.visibility, truth.visibility));
+      std::cerr << ": " << frameTimeMs(truthRecord) << " ms\n";
+      save(truthCell, truth, truthRecord);
+      for (std::size_t i : owned[key]) {
+        if (i == truthCell) continue;
+        const SweepCell& cell = plan.cells[i];
+        progress(cell, cell.technique);
+        const TechniqueRun run = runner.run(techniqueOf(cell), parameters.at(i));
+        nlohmann::json record = makeRecord(run, runner, backend);
+        record["error"] = toJson(computeErrorMetrics(run.visibility, truth.visibility));
+        std::cerr << ": " << frameTimeMs(record) << " ms, mismatch " << record["error"]["mismatch_pct"].get<double>() << "%\n";
+        save(i, run, record);
+      }
+    }
+    std::sort(records.begin(), records.end(), [](const auto& a, const auto& b) { return a["cell"] < b["cell"]; });
+
+    std::string commandLine = "testbed sweep --spec " + options->spec + " --shard " + shard.text();
+    for (const char* flag : {"--size", "--shadow-map", "--depth-format", "--repeat"})
+      if (command->count(flag)) commandLine += std::string(" ") + flag + " " + command->get_option(flag)->as<std::string>();
+    commandLine += " --backend " + options->common.backend + " --out " + options->common.out;
+    const nlohmann::json manifest = {
+        {"spec", spec.name},
+        {"spec_file", spec.file.string()},
+        {"spec_fingerprint", specFingerprint(spec.document, overridesJson(overrides))},
+        {"overrides", overridesJson(overrides)},
+        {"build", buildFingerprint()},
+        {"shard", shard.text()},
+        {"cells", plan.cells.size()},
+        {"command", commandLine},
+        {"host", hostDescription()},
+        {"backend", backend},
+        {"seconds", std::chrono::duration<double>(Clock::now() - start).count()},
+    };
+    files.writeText("records.json", nlohmann::json(records).dump(2) + "\n");
+    files.writeText("sweep.json", manifest.dump(2) + "\n");
+    files.writeText("spec.json", spec.document.dump(2) + "\n");
+    const bool whole = shard.count == 1;
+    if (whole) {
+      stageSweepReport(files, spec, plan, records,
+                       {{"command", commandLine}, {"machine", hostDescription()}, {"backend", backend},
+                        {"build", manifest["build"]}},
+                       figureImages);
+    }
+    files.commit();
+    if (whole && !options->noPlot) plotSweepTables(options->common.out, spec.name);
+    std::cerr << "testbed: " << records.size() << " records of " << plan.cells.size() << " cells (shard " << shard.text()
+              << ") in " << options->common.out << "\n";
+    return 0;
+  };
+}
+
+}  // namespace testbed

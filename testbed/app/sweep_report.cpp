@@ -1,0 +1,153 @@
+#include "testbed/app/sweep_report.h"
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "testbed/core/error.h"
+#include "testbed/sweep/sweep_figure.h"
+
+extern char** environ;
+
+namespace testbed {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// "osmesa: llvmpipe (LLVM 15.0.6, 256 bits)" → "osmesa-llvmpipe-llvm-15-0-6-256-bits".
+std::string slug(const std::string& text) {
+  std::string out;
+  for (unsigned char c : text) {
+    if (std::isalnum(c)) out += char(std::tolower(c));
+    else if (!out.empty() && out.back() != '-') out += '-';
+  }
+  while (!out.empty() && out.back() == '-') out.pop_back();
+  return out.substr(0, 48);
+}
+
+std::string python() {
+  if (const char* chosen = std::getenv("TESTBED_PYTHON")) return chosen;
+  return fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";  // Debian's, which has matplotlib
+}
+
+}  // namespace
+
+std::string buildFingerprint() {
+  std::ifstream in("/proc/self/exe", std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return fingerprint(bytes.str());
+}
+
+std::string hostDescription() {
+  char host[256] = {0};
+  gethostname(host, sizeof host - 1);
+  std::string cpu;
+  std::ifstream info("/proc/cpuinfo");
+  for (std::string line; cpu.empty() && std::getline(info, line);)
+    if (line.rfind("model name", 0) == 0) cpu = line.substr(line.find(':') + 2);
+  return std::string(host) + " (" + (cpu.empty() ? "unknown CPU" : cpu) + ", " +
+         std::to_string(sysconf(_SC_NPROCESSORS_ONLN)) + " cores)";
+}
+
+json overridesJson(const SweepOverrides& o) {
+  json j = json::object();
+  if (o.size) j["size"] = *o.size;
+  if (o.shadowMap) j["shadow_map"] = *o.shadowMap;
+  if (o.depthFormat) j["depth_format"] = *o.depthFormat;
+  if (o.repeat) j["repeat"] = *o.repeat;
+  return j;
+}
+
+SweepOverrides overridesFromJson(const json& j) {
+  SweepOverrides o;
+  if (j.contains("size")) o.size = j["size"].get<std::string>();
+  if (j.contains("shadow_map")) o.shadowMap = j["shadow_map"].get<int>();
+  if (j.contains("depth_format")) o.depthFormat = j["depth_format"].get<std::string>();
+  if (j.contains("repeat")) o.repeat = j["repeat"].get<int>();
+  return o;
+}
+
+std::string specFingerprint(const json& document, const json& overrides) {
+  return fingerprint(document.dump() + "\n" + overrides.dump());
+}
+
+std::vector<std::size_t> figureCells(const SweepSpec& spec, const SweepPlan& plan) {
+  std::vector<std::size_t> cells;
+  std::set<std::size_t> seen;
+  for (std::size_t r = 0; r < spec.rows.size(); ++r)
+    for (std::size_t cell : plan.entries[r][spec.figure.column])
+      for (std::size_t c : {plan.cells[cell].truthCell, cell})
+        if (seen.insert(c).second) cells.push_back(c);
+  return cells;
+}
+
+std::string figureFileName(std::size_t cell, const char* extension) {
+  return "figure-cell-" + std::to_string(cell) + "." + extension;
+}
+
+void stageSweepReport(OutputFiles& files, const SweepSpec& spec, const SweepPlan& plan, const std::vector<json>& records,
+                      const SweepHeader& header, const std::map<std::size_t, FigureImages>& figureImages) {
+  std::map<std::string, std::map<std::size_t, json>> byBackend;
+  for (const auto& record : records)
+    byBackend[record.at("backend").get<std::string>()][record.at("cell").get<std::size_t>()] = record;
+  if (byBackend.empty()) byBackend[""];  // an empty table still shows the paper's figures
+  for (const auto& [backend, cells] : byBackend) {
+    const std::string name = byBackend.size() == 1 ? spec.name : spec.name + "." + slug(backend);
+    SweepHeader withBackend = header;
+    for (auto& [key, value] : withBackend)
+      if (key == "backend") value = backend;
+    const SweepTable table = buildSweepTable(spec, plan, cells);
+    files.writeText(name + ".md", sweepTableMarkdown(table, withBackend));
+    files.writeText(name + ".json", sweepTableJson(table, withBackend).dump(2) + "\n");
+  }
+  // One close-up figure per frame set-up of the figure column (a scene, in the papers).
+  std::map<std::size_t, std::vector<std::size_t>> byTruth;
+  for (std::size_t cell : figureCells(spec, plan))
+    if (plan.cells[cell].technique != kGroundTruthId) byTruth[plan.cells[cell].truthCell].push_back(cell);
+  std::set<std::string> names;
+  for (const auto& [truth, cells] : byTruth) {
+    if (!figureImages.count(truth)) continue;
+    std::vector<CloseUpTile> tiles;
+    for (std::size_t cell : cells) {
+      const auto it = figureImages.find(cell);
+      if (it == figureImages.end()) continue;
+      std::string label = plan.cells[cell].technique;
+      for (const auto& [k, v] : plan.cells[cell].params) label.append(" ").append(k).append("=").append(v);
+      tiles.push_back({label, &it->second.visibility, &it->second.shaded});
+    }
+    const FigureImages& gt = figureImages.at(truth);
+    const CloseUpFigure figure = closeUpFigure({"shadow volumes (ground truth)", &gt.visibility, &gt.shaded}, tiles,
+                                               spec.figure.window);
+    std::string name = spec.name + "-closeup-" + plan.cells[truth].scene;
+    while (!names.insert(name).second) name.append("-").append(std::to_string(truth));
+    files.writeImage(name + ".png", figure.image);
+  }
+}
+
+void plotSweepTables(const fs::path& dir, const std::string& name) {
+  const std::string script = std::string(TESTBED_SOURCE_DIR) + "/scripts/sweep_plot.py";
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string file = entry.path().filename().string();
+    if (entry.path().extension() != ".json" || file.rfind(name, 0) != 0 ||
+        (file != name + ".json" && file.rfind(name + ".", 0) != 0))
+      continue;
+    const std::string interpreter = python(), table = entry.path().string();
+    std::vector<char*> argv = {const_cast<char*>(interpreter.c_str()), const_cast<char*>(script.c_str()),
+                               const_cast<char*>(table.c_str()), nullptr};
+    pid_t pid = 0;
+    if (posix_spawnp(&pid, interpreter.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
+      throw std::runtime_error("cannot start " + interpreter + " for " + script);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+      throw std::runtime_error(script + " failed on " + table + " (python3-matplotlib installed? --no-plot skips plots)");
+  }
+}
+
+}  // namespace testbed

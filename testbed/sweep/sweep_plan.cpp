@@ -1,0 +1,121 @@
+#include "testbed/sweep/sweep_plan.h"
+
+#include <charconv>
+
+#include "testbed/core/error.h"
+#include "testbed/technique/registry.h"
+
+namespace testbed {
+namespace {
+
+template <typename T>
+std::optional<T> firstOf(std::initializer_list<const std::optional<T>*> levels) {
+  for (const auto* level : levels)
+    if (*level) return **level;
+  return std::nullopt;
+}
+
+// Checks a cell's parameters against the technique's declared ones.
+void validateParameters(const SweepCell& cell, const SweepSpec& spec, const std::string& where) {
+  try {
+    if (cell.technique == kGroundTruthId)
+      resolveParameters(cell.technique, {}, cell.params);
+    else
+      resolveParameters(cell.technique, findTechnique(cell.technique).info->parameters, cell.params);
+  } catch (const InputError& error) {
+    throw InputError(spec.file.string() + ": " + where + ": " + error.what());
+  }
+}
+
+}  // namespace
+
+std::string SweepCell::frameKey() const {
+  return scene + "|" + (subdivide ? std::to_string(*subdivide) : "-") + "|" + size + "|" +
+         std::to_string(shadowMap) + "|" + depthFormat;
+}
+
+nlohmann::json SweepCell::toJson() const {
+  nlohmann::json j = {{"scene", scene}, {"size", size}, {"shadow_map", shadowMap}, {"depth_format", depthFormat},
+                      {"technique", technique}, {"params", params}};
+  if (subdivide) j["subdivide"] = *subdivide;
+  return j;
+}
+
+SweepPlan planSweep(const SweepSpec& spec, const SweepOverrides& overrides) {
+  SweepPlan plan;
+  plan.repeat = overrides.repeat.value_or(spec.repeat);
+  std::map<std::string, std::size_t> index;  // cell JSON → cell
+  auto add = [&](SweepCell cell) {
+    const std::string key = cell.toJson().dump();
+    const auto [it, fresh] = index.emplace(key, plan.cells.size());
+    if (fresh) plan.cells.push_back(std::move(cell));
+    return it->second;
+  };
+  std::map<std::string, std::size_t> truthOf;  // frame key → ground-truth cell
+  plan.entries.assign(spec.rows.size(), std::vector<std::vector<std::size_t>>(spec.columns.size()));
+  for (std::size_t c = 0; c < spec.columns.size(); ++c) {
+    for (std::size_t r = 0; r < spec.rows.size(); ++r) {
+      if (!spec.rows[r].measured(c)) continue;  // no cells: shown as "—" with the row's reason
+      const SweepSettings& col = spec.columns[c].set;
+      const SweepSettings& row = spec.rows[r].set;
+      const SweepSettings& top = spec.settings;
+      const std::string where = "rows[" + std::to_string(r) + "] × columns[" + std::to_string(c) + "]";
+      SweepCell base;
+      const auto scene = firstOf<std::string>({&col.scene, &row.scene, &top.scene});
+      if (scene) base.scene = *scene;
+      else if (spec.scenes.size() == 1) base.scene = spec.scenes.begin()->first;
+      else
+        throw InputError(spec.file.string() + ": " + where +
+                         ": no scene (give \"scene\" in the row, the column or \"settings\": the spec has several)");
+      base.subdivide = firstOf<int>({&col.subdivide, &row.subdivide, &top.subdivide});
+      base.size = overrides.size.value_or(firstOf<std::string>({&col.size, &row.size, &top.size}).value_or("1280x720"));
+      base.shadowMap = overrides.shadowMap.value_or(firstOf<int>({&col.shadowMap, &row.shadowMap, &top.shadowMap}).value_or(1024));
+      base.depthFormat =
+          overrides.depthFormat.value_or(firstOf<std::string>({&col.depthFormat, &row.depthFormat, &top.depthFormat}).value_or("16"));
+
+      const auto truth = truthOf.find(base.frameKey());
+      if (truth == truthOf.end()) {
+        SweepCell gt = base;
+        gt.technique = kGroundTruthId;
+        gt.truthCell = plan.cells.size();
+        truthOf[base.frameKey()] = add(gt);
+      }
+      base.truthCell = truthOf.at(base.frameKey());
+      for (const auto& technique : spec.rows[r].techniques) {
+        SweepCell cell = base;
+        cell.technique = technique;
+        const std::string prefix = technique + ".";
+        for (const auto* level : {&top.params, &row.params, &col.params})  // later levels win
+          for (const auto& [name, value] : *level)
+            if (name.compare(0, prefix.size(), prefix) == 0) cell.params[name.substr(prefix.size())] = value;
+        validateParameters(cell, spec, where);
+        plan.entries[r][c].push_back(add(std::move(cell)));
+      }
+    }
+  }
+  return plan;
+}
+
+Shard parseShard(const std::string& text) {
+  Shard shard;
+  const auto slash = text.find('/');
+  auto parse = [](std::string_view part, int& value) {
+    const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
+    return ec == std::errc() && end == part.data() + part.size() && !part.empty();
+  };
+  if (slash == std::string::npos || !parse(std::string_view(text).substr(0, slash), shard.index) ||
+      !parse(std::string_view(text).substr(slash + 1), shard.count) || shard.count < 1 || shard.count > 100000 ||
+      shard.index < 1 || shard.index > shard.count)
+    throw InputError("--shard: expected K/N with 1 <= K <= N (e.g. 2/4), got '" + text + "'");
+  return shard;
+}
+
+std::string fingerprint(const std::string& bytes) {
+  std::uint64_t hash = 1469598103934665603ull;
+  for (unsigned char c : bytes) hash = (hash ^ c) * 1099511628211ull;
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+  return text;
+}
+
+}  // namespace testbed

@@ -1,0 +1,61 @@
+#pragma once
+// A spec expanded into cells, the units of work of a sweep: one technique with its
+// parameters on one scene at one output size, shadow-map size and depth format. Equal
+// cells are run once however many table entries use them; every frame set-up gets a
+// ground-truth cell (its errors need it, and the papers time shadow volumes too).
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "testbed/sweep/sweep_spec.h"
+
+namespace testbed {
+
+// Command-line options that override every level of the spec (a quick, small run).
+struct SweepOverrides {
+  std::optional<std::string> size;
+  std::optional<int> shadowMap;
+  std::optional<std::string> depthFormat;
+  std::optional<int> repeat;
+};
+
+struct SweepCell {
+  std::string scene;                   // id in the spec's "scenes"
+  std::optional<int> subdivide;        // applied to every mesh object of the scene
+  std::string size;                    // "WxH"
+  int shadowMap = 1024;
+  std::string depthFormat = "16";
+  std::string technique;               // registry id or "groundtruth"
+  std::map<std::string, std::string> params;  // the technique's own names → value text
+  std::size_t truthCell = 0;           // the ground-truth cell of the same frame set-up
+
+  // Identifies the frame set-up (scene, subdivision, sizes, depth format).
+  std::string frameKey() const;
+  nlohmann::json toJson() const;
+};
+
+struct SweepPlan {
+  std::vector<SweepCell> cells;
+  // entries[row][column]: the cells (one per technique of the row) a table entry reads.
+  std::vector<std::vector<std::vector<std::size_t>>> entries;
+  int repeat = 1;
+};
+
+SweepPlan planSweep(const SweepSpec& spec, const SweepOverrides& overrides);
+
+struct Shard {
+  int index = 1, count = 1;  // K/N, 1-based
+  bool owns(std::size_t cell) const { return int(cell % std::size_t(count)) == index - 1; }
+  std::string text() const { return std::to_string(index) + "/" + std::to_string(count); }
+};
+// "K/N" with 1 ≤ K ≤ N ≤ 100000; throws InputError("--shard: ...").
+Shard parseShard(const std::string& text);
+
+// FNV-1a, 64 bits, as 16 hex digits: the identity of a spec or of a build.
+std::string fingerprint(const std::string& bytes);
+
+}  // namespace testbed

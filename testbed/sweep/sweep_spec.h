@@ -1,0 +1,83 @@
+#pragma once
+// A sweep spec (README "Paper runs"): the scenes, the table's rows (techniques with
+// parameters) and columns (shadow map, output size, scene, subdivision, any parameter),
+// what is measured, and the paper's own figures beside each row, cited. Read from JSON
+// and validated like scene files: any mistake is one InputError naming the file and key.
+#include <array>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace testbed {
+
+// The reference that every table can time (the stencil shadow volumes).
+inline constexpr const char* kGroundTruthId = "groundtruth";
+
+// What a table's numbers are. Times are the whole frame as the papers measured it: the
+// G-buffer plus every pass of the technique (shadow map included); `fps` is 1000 / that.
+enum class SweepMeasure { FrameMs, Fps, MemoryMb };
+
+// Settings a column or row may change; unset fields fall back to the level above
+// (column, then row, then the spec's "settings", then the command line's defaults).
+struct SweepSettings {
+  std::optional<std::string> scene;
+  std::optional<std::string> size;  // "WxH"
+  std::optional<int> shadowMap;
+  std::optional<std::string> depthFormat;
+  std::optional<int> subdivide;     // Loop subdivisions applied to every mesh of the scene
+  std::map<std::string, std::string> params;  // "technique.name" → value text (as --set)
+};
+
+struct SweepColumn {
+  std::string label;
+  SweepSettings set;
+};
+
+struct SweepRow {
+  std::string group;                    // shown once per run of equal groups ("3 × 3")
+  std::string label;                    // the paper's row name
+  std::vector<std::string> techniques;  // several: the mean of their values (the papers' "pre-filtering")
+  SweepSettings set;
+  // Sum of these passes instead of the whole frame ("gbuffer" names the G-buffer pass).
+  std::optional<std::vector<std::string>> passes;
+  // Non-empty: entries we cannot measure (no such step here, a kernel beyond our range),
+  // shown as "—" with this reason; all columns, or only those in notMeasuredColumns.
+  std::string notMeasured;
+  std::vector<std::size_t> notMeasuredColumns;
+  std::vector<std::optional<double>> paper;   // one per column; null where the paper gives none
+
+  bool measured(std::size_t column) const;
+};
+
+struct SweepFigure {
+  std::size_t column = 0;  // the column whose cells are shown
+  std::optional<std::array<int, 3>> window;  // x, y, side in pixels; unset: where techniques differ most
+};
+
+struct SweepSpec {
+  std::filesystem::path file;
+  nlohmann::json document;  // as read, for the shards' identity and for merge
+  std::string name, title, citation, note;
+  std::map<std::string, std::filesystem::path> scenes;  // id → scene file (absolute)
+  SweepSettings settings;
+  int repeat = 1;
+  SweepMeasure measure = SweepMeasure::FrameMs;
+  std::vector<SweepColumn> columns;
+  std::vector<SweepRow> rows;
+  SweepFigure figure;
+};
+
+// Reads and validates a spec. Relative scene paths are relative to the spec's folder.
+// Technique ids and parameters are checked against the registry (load plugins first).
+SweepSpec loadSweepSpec(const std::filesystem::path& file);
+// `sceneFilesMustExist` false: for merge, which reads records, not scenes.
+SweepSpec parseSweepSpec(const nlohmann::json& document, const std::filesystem::path& file,
+                         bool sceneFilesMustExist = true);
+
+std::string measureUnit(SweepMeasure measure);
+
+}  // namespace testbed

@@ -1,0 +1,183 @@
+#include "testbed/sweep/sweep_table.h"
+
+#include <cmath>
+#include <algorithm>
+#include <cstdio>
+#include <set>
+#include <sstream>
+
+#include "testbed/core/error.h"
+
+namespace testbed {
+namespace {
+
+using nlohmann::json;
+
+const json& times(const json& record) { return record.at(record.at("timing") == "wall" ? "wall_ms" : "gpu_ms"); }
+
+double passMs(const json& record, const std::string& pass, const SweepSpec& spec, std::size_t row) {
+  if (pass == "gbuffer") return record.at("gbuffer_ms").get<double>();
+  const json& passes = times(record).at("passes");
+  if (!passes.contains(pass)) {
+    std::string known = "gbuffer";
+    for (const auto& [name, value] : passes.items()) known += ", " + name;
+    throw InputError(spec.file.string() + ": rows[" + std::to_string(row) + "].passes: " +
+                     record.at("technique").get<std::string>() + " has no pass '" + pass + "' (its passes: " + known + ")");
+  }
+  return passes.at(pass).get<double>();
+}
+
+// One technique's value in the table's measure.
+double cellValue(const json& record, const SweepSpec& spec, std::size_t row) {
+  const SweepRow& r = spec.rows[row];
+  if (spec.measure == SweepMeasure::MemoryMb) return record.at("memory_bytes").get<double>() / (1024.0 * 1024.0);
+  double ms = 0;
+  if (r.passes)
+    for (const auto& pass : *r.passes) ms += passMs(record, pass, spec, row);
+  else
+    ms = recordFrameMs(record);
+  return spec.measure == SweepMeasure::Fps ? (ms > 0 ? 1000.0 / ms : NAN) : ms;
+}
+
+// Cost of `value` relative to `baseline` (> 1: dearer than sm), whatever the measure.
+std::optional<double> costRatio(std::optional<double> value, std::optional<double> baseline, SweepMeasure measure) {
+  if (!value || !baseline || *value <= 0 || *baseline <= 0) return std::nullopt;
+  return measure == SweepMeasure::Fps ? *baseline / *value : *value / *baseline;
+}
+
+bool isSmRow(const SweepRow& row) { return row.techniques == std::vector<std::string>{"sm"} && !row.passes; }
+
+std::string number(std::optional<double> value, int decimals) {
+  if (!value || !std::isfinite(*value)) return "—";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*f", std::abs(*value) >= 100 ? std::min(decimals, 1) : decimals, *value);
+  return text;
+}
+
+json optionals(const std::vector<std::optional<double>>& values) {
+  json list = json::array();
+  for (const auto& v : values) list.push_back(v && std::isfinite(*v) ? json(*v) : json(nullptr));
+  return list;
+}
+
+}  // namespace
+
+double recordFrameMs(const json& record) {
+  return record.at("gbuffer_ms").get<double>() + times(record).at("total").get<double>();
+}
+
+SweepTable buildSweepTable(const SweepSpec& spec, const SweepPlan& plan, const std::map<std::size_t, json>& records) {
+  SweepTable table;
+  table.name = spec.name;
+  table.title = spec.title;
+  table.citation = spec.citation;
+  table.note = spec.note;
+  table.unit = measureUnit(spec.measure);
+  for (const auto& column : spec.columns) table.columns.push_back(column.label);
+  for (const auto& [cell, record] : records) {
+    const std::string backend = record.at("backend").get<std::string>();
+    if (!table.backend.empty() && table.backend != backend)
+      throw std::logic_error("buildSweepTable: records of several backends (" + table.backend + ", " + backend + ")");
+    table.backend = backend;
+  }
+  for (std::size_t r = 0; r < spec.rows.size(); ++r) {
+    SweepTableRow row{spec.rows[r].group, spec.rows[r].label, spec.rows[r].notMeasured, {}, spec.rows[r].paper, {}, {}};
+    for (std::size_t c = 0; c < spec.columns.size(); ++c) {
+      std::optional<double> value;
+      if (!plan.entries[r][c].empty()) {
+        double sum = 0;
+        bool complete = true;
+        for (const std::size_t cell : plan.entries[r][c]) {
+          const auto it = records.find(cell);
+          if (it == records.end()) complete = false;
+          else sum += cellValue(it->second, spec, r);
+        }
+        if (complete) value = sum / double(plan.entries[r][c].size());
+      }
+      row.ours.push_back(value);
+    }
+    table.rows.push_back(std::move(row));
+  }
+  // The baseline of a row: the `sm` row of its group, else the table's first `sm` row.
+  // Ours divides only by a baseline of the same frame set-up.
+  for (std::size_t r = 0; r < spec.rows.size(); ++r) {
+    std::optional<std::size_t> baseline;
+    for (std::size_t b = 0; b < spec.rows.size(); ++b)
+      if (isSmRow(spec.rows[b]) && (!baseline || (spec.rows[b].group == spec.rows[r].group &&
+                                                  spec.rows[*baseline].group != spec.rows[r].group)))
+        baseline = b;
+    if (baseline) table.hasRatios = true;
+    auto& row = table.rows[r];
+    for (std::size_t c = 0; c < spec.columns.size(); ++c) {
+      if (!baseline) {
+        row.oursRatio.push_back(std::nullopt);
+        row.paperRatio.push_back(std::nullopt);
+        continue;
+      }
+      const auto& ours = plan.entries[r][c];
+      const auto& base = plan.entries[*baseline][c];
+      const bool sameFrame = !ours.empty() && !base.empty() &&
+                             plan.cells[ours.front()].frameKey() == plan.cells[base.front()].frameKey();
+      row.oursRatio.push_back(sameFrame ? costRatio(row.ours[c], table.rows[*baseline].ours[c], spec.measure) : std::nullopt);
+      row.paperRatio.push_back(costRatio(row.paper[c], table.rows[*baseline].paper[c], spec.measure));
+    }
+  }
+  return table;
+}
+
+std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& header) {
+  std::ostringstream md;
+  md << "# " << (table.title.empty() ? table.name : table.title) << "\n\n";
+  md << "Paper: " << table.citation << ". Unit: " << table.unit;
+  if (table.unit == "ms" || table.unit == "fps")
+    md << " of the whole frame (G-buffer and every pass of the technique, shadow map included)";
+  md << ".";
+  if (table.hasRatios) md << " `×SM`: cost relative to shadow mapping in the same column (time, or memory), ours against ours and the paper's against the paper's.";
+  md << "\n\n";
+  for (const auto& [name, value] : header) md << "- " << name << ": " << value << "\n";
+  if (!header.empty()) md << "\n";
+  if (!table.note.empty()) md << table.note << "\n\n";
+
+  const bool groups = std::any_of(table.rows.begin(), table.rows.end(), [](const auto& r) { return !r.group.empty(); });
+  md << "|" << (groups ? " |" : "") << " technique |";
+  for (const auto& c : table.columns) md << " " << c << " ours | " << c << " paper |";
+  if (table.hasRatios)
+    for (const auto& c : table.columns) md << " " << c << " ours ×SM | " << c << " paper ×SM |";
+  md << "\n|" << (groups ? "---|" : "") << "---|";
+  const std::size_t n = table.columns.size() * (table.hasRatios ? 4 : 2);
+  for (std::size_t i = 0; i < n; ++i) md << "---:|";
+  md << "\n";
+  std::string lastGroup;
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const auto& row = table.rows[r];
+    md << "|";
+    if (groups) md << " " << (r == 0 || row.group != lastGroup ? row.group : "") << " |";
+    lastGroup = row.group;
+    md << " " << row.label << (row.notMeasured.empty() ? "" : " †") << " |";
+    for (std::size_t c = 0; c < table.columns.size(); ++c) md << " " << number(row.ours[c], 2) << " | " << number(row.paper[c], 2) << " |";
+    if (table.hasRatios)
+      for (std::size_t c = 0; c < table.columns.size(); ++c)
+        md << " " << number(row.oursRatio[c], 2) << " | " << number(row.paperRatio[c], 2) << " |";
+    md << "\n";
+  }
+  std::set<std::string> footnotes;  // each row label and reason once, however many groups repeat it
+  for (const auto& row : table.rows)
+    if (!row.notMeasured.empty() && footnotes.insert(row.label + ": " + row.notMeasured).second)
+      md << (footnotes.size() == 1 ? "\n" : "") << "† " << row.label << ": " << row.notMeasured << "\n";
+  return md.str();
+}
+
+json sweepTableJson(const SweepTable& table, const SweepHeader& header) {
+  json rows = json::array();
+  for (const auto& row : table.rows)
+    rows.push_back({{"group", row.group}, {"label", row.label}, {"not_measured", row.notMeasured},
+                    {"ours", optionals(row.ours)}, {"paper", optionals(row.paper)},
+                    {"ours_ratio", optionals(row.oursRatio)}, {"paper_ratio", optionals(row.paperRatio)}});
+  json head = json::object();
+  for (const auto& [name, value] : header) head[name] = value;
+  return {{"name", table.name},       {"title", table.title}, {"citation", table.citation},
+          {"unit", table.unit},       {"backend", table.backend}, {"columns", table.columns},
+          {"has_ratios", table.hasRatios}, {"rows", rows}, {"header", head}};
+}
+
+}  // namespace testbed

@@ -1,0 +1,45 @@
+#pragma once
+// A paper's table rebuilt from sweep records: the paper's rows and columns, our figure
+// beside the paper's, and each one's ratio to plain shadow mapping in the same column
+// (on a software rasterizer only the ratios compare with a paper's GPU).
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "testbed/sweep/sweep_plan.h"
+#include "testbed/sweep/sweep_spec.h"
+
+namespace testbed {
+
+struct SweepTableRow {
+  std::string group, label, notMeasured;
+  std::vector<std::optional<double>> ours, paper, oursRatio, paperRatio;
+};
+
+struct SweepTable {
+  std::string name, title, citation, note, unit, backend;
+  std::vector<std::string> columns;
+  std::vector<SweepTableRow> rows;
+  bool hasRatios = false;  // false when the table has no `sm` row to divide by
+};
+
+// Lines above the table naming how it was made (command, machine, backend, build).
+using SweepHeader = std::vector<std::pair<std::string, std::string>>;
+
+// `records`: cell index → record, all of one backend. Cells without a record read as
+// missing ("—"). Throws InputError naming the spec's row when a row's pass is unknown.
+SweepTable buildSweepTable(const SweepSpec& spec, const SweepPlan& plan,
+                           const std::map<std::size_t, nlohmann::json>& records);
+
+std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& header);
+// The same data for scripts/sweep_plot.py.
+nlohmann::json sweepTableJson(const SweepTable& table, const SweepHeader& header);
+
+// The whole frame in ms from a record: the G-buffer pass plus every pass of the
+// technique, in the measure the record's "timing" names (README "Record").
+double recordFrameMs(const nlohmann::json& record);
+
+}  // namespace testbed

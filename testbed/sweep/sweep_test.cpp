@@ -1,0 +1,257 @@
+// Sweep specs, cells, shards and tables without a GL context: validation messages, the
+// shard partition, the paper specs' shapes and the table arithmetic.
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "testbed/core/error.h"
+#include "testbed/sweep/sweep_plan.h"
+#include "testbed/sweep/sweep_spec.h"
+#include "testbed/sweep/sweep_table.h"
+#include "testbed/scene/scene.h"
+
+namespace testbed {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const fs::path kSpecFile = fs::path(TESTBED_SOURCE_DIR) / "tests" / "data" / "in-memory.json";
+
+json tinySpec() {
+  return json::parse(R"({
+    "name": "t", "citation": "test",
+    "scenes": {"wall": "../../scenes/wall.json", "bunny": "../../scenes/bunny.json"},
+    "settings": {"scene": "wall", "size": "160x90"},
+    "columns": [{"label": "a", "shadow_map": 64}, {"label": "b", "shadow_map": 128}, {"label": "c", "scene": "bunny"}],
+    "rows": [
+      {"label": "SM", "techniques": ["sm"], "paper": [1, 2, 4]},
+      {"label": "PF", "techniques": ["vsm", "esm"], "params": {"vsm.blur": 5}, "paper": [2, null, 8]},
+      {"label": "PCF", "techniques": ["pcf"], "params": {"pcf.kernel": 5}, "paper": [3, 3, 3]},
+      {"label": "SV", "techniques": ["groundtruth"], "paper": [10, 10, 10]}
+    ]})");
+}
+
+// The InputError message of parsing and planning `spec`, or "" when it is valid.
+std::string errorOf(const json& spec) {
+  try {
+    planSweep(parseSweepSpec(spec, kSpecFile), {});
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(SweepSpec, TinySpecIsValid) { EXPECT_EQ(errorOf(tinySpec()), ""); }
+
+TEST(SweepSpec, MistakesNameTheFileAndTheKey) {
+  struct Case {
+    std::string path;  // JSON pointer to change
+    json value;
+    std::string expected;  // part of the message after the file name
+  };
+  const std::vector<Case> cases = {
+      {"/colour", 1, "colour: unknown key"},
+      {"/rows/1/kernel", 3, "rows[1].kernel: unknown key"},
+      {"/columns/0/shadow_map", "big", "columns[0].shadow_map: expected an integer"},
+      {"/columns/0/shadow_map", 0, "columns[0].shadow_map: 0 is outside 1..16384"},
+      {"/settings/size", "160by90", "settings.size: expected WxH"},
+      {"/rows/0/paper", json::array({1, 2}), "rows[0].paper: expected an array of 3"},
+      {"/rows/0/paper/1", "fast", "rows[0].paper[1]: expected a number or null"},
+      {"/rows/2/techniques/0", "pcff", "rows[2].techniques[0]:"},
+      {"/rows/2/params/pcf.kernel", 4, "rows[2] × columns[0]:"},
+      {"/rows/2/params/pcf.kernels", 3, "rows[2] × columns[0]:"},
+      {"/rows/2/params/kernel", 3, "rows[2].params.kernel: expected a key \"technique.name\""},
+      {"/scenes/wall", "no-such-scene.json", "scenes.wall: no such scene file"},
+      {"/columns/2/scene", "dragon", "columns[2].scene: 'dragon' is not in \"scenes\""},
+      {"/measure", "joules", "measure: expected frame_ms, fps or memory_mb"},
+      {"/name", "Table 2", "name: expected lower-case"},
+      {"/figure", json{{"column", 7}}, "figure.column: 7 is outside 0..2"},
+  };
+  for (const auto& c : cases) {
+    json spec = tinySpec();
+    spec[json::json_pointer(c.path)] = c.value;
+    const std::string message = errorOf(spec);
+    EXPECT_EQ(message.rfind(kSpecFile.string() + ": ", 0), 0u) << c.path << ": " << message;
+    EXPECT_NE(message.find(c.expected), std::string::npos) << c.path << ": " << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+  json spec = tinySpec();
+  spec.erase("rows");
+  EXPECT_NE(errorOf(spec).find("rows: missing"), std::string::npos);
+  spec = tinySpec();
+  spec["settings"].erase("scene");
+  EXPECT_NE(errorOf(spec).find("rows[0] × columns[0]: no scene"), std::string::npos);
+}
+
+TEST(SweepSpec, MissingOrBrokenFileIsNamed) {
+  const fs::path missing = fs::temp_directory_path() / "testbed-no-such-spec.json";
+  EXPECT_THROW(
+      {
+        try {
+          loadSweepSpec(missing);
+        } catch (const InputError& error) {
+          EXPECT_NE(std::string(error.what()).find(missing.string()), std::string::npos);
+          throw;
+        }
+      },
+      InputError);
+}
+
+TEST(SweepPlan, EqualCellsRunOnceAndEveryFrameHasItsGroundTruth) {
+  const SweepPlan plan = planSweep(parseSweepSpec(tinySpec(), kSpecFile), {});
+  // 3 frame set-ups (64², 128², bunny at 1024²) × (groundtruth, sm, vsm, esm, pcf).
+  EXPECT_EQ(plan.cells.size(), 15u);
+  EXPECT_EQ(plan.entries[1][0].size(), 2u);  // PF: the mean of vsm and esm
+  EXPECT_EQ(plan.entries[3][1].front(), plan.cells[plan.entries[0][1].front()].truthCell);
+  std::set<std::string> frames;
+  for (const auto& cell : plan.cells) {
+    frames.insert(cell.frameKey());
+    EXPECT_EQ(plan.cells[cell.truthCell].technique, "groundtruth");
+    EXPECT_EQ(plan.cells[cell.truthCell].frameKey(), cell.frameKey());
+  }
+  EXPECT_EQ(frames.size(), 3u);
+  EXPECT_EQ(plan.cells[plan.entries[2][0].front()].params.at("kernel"), "5");
+  EXPECT_TRUE(plan.cells[plan.entries[1][0][1]].params.empty());  // vsm.blur is vsm's alone
+}
+
+TEST(SweepPlan, OverridesReplaceEveryLevel) {
+  SweepOverrides overrides;
+  overrides.shadowMap = 32;
+  overrides.size = "80x45";
+  const SweepPlan plan = planSweep(parseSweepSpec(tinySpec(), kSpecFile), overrides);
+  for (const auto& cell : plan.cells) {
+    EXPECT_EQ(cell.shadowMap, 32);
+    EXPECT_EQ(cell.size, "80x45");
+  }
+  EXPECT_EQ(plan.cells.size(), 10u);  // the two wall columns collapse into one set-up
+}
+
+TEST(SweepShard, ShardsPartitionTheCellsExactlyOnce) {
+  const SweepPlan plan = planSweep(parseSweepSpec(tinySpec(), kSpecFile), {});
+  for (int n = 1; n <= 7; ++n) {
+    std::vector<int> owners(plan.cells.size(), 0);
+    for (int k = 1; k <= n; ++k)
+      for (std::size_t i = 0; i < plan.cells.size(); ++i) owners[i] += parseShard(std::to_string(k) + "/" + std::to_string(n)).owns(i);
+    for (std::size_t i = 0; i < owners.size(); ++i) EXPECT_EQ(owners[i], 1) << "cell " << i << " with " << n << " shards";
+  }
+}
+
+TEST(SweepShard, BadShardsAreRejected) {
+  for (const char* bad : {"3/2", "0/2", "1/0", "2", "a/b", "1/2x", "-1/2", "", "1/", "/2"}) {
+    try {
+      parseShard(bad);
+      ADD_FAILURE() << "accepted '" << bad << "'";
+    } catch (const InputError& error) {
+      EXPECT_EQ(std::string(error.what()).rfind("--shard: ", 0), 0u) << error.what();
+    }
+  }
+  EXPECT_EQ(parseShard("2/3").text(), "2/3");
+}
+
+json fakeRecord(const SweepCell& cell, double ms, double gbuffer, std::uint64_t bytes) {
+  return {{"technique", cell.technique}, {"backend", "fake"}, {"timing", "wall"}, {"gbuffer_ms", gbuffer},
+          {"wall_ms", {{"total", ms}, {"passes", {{"shadow-map", ms / 2}, {"visibility", ms / 2}}}}},
+          {"gpu_ms", {{"total", 0.0}, {"passes", json::object()}}}, {"memory_bytes", bytes}};
+}
+
+TEST(SweepTable, MeansRatiosAndPasses) {
+  json document = tinySpec();
+  document["rows"].push_back({{"label", "SM map pass"}, {"techniques", {"sm"}}, {"passes", {"gbuffer", "shadow-map"}},
+                              {"paper", {1, 1, 1}}});
+  document["rows"].push_back({{"label", "not ours"}, {"techniques", {"sm"}}, {"not_measured", "no such step here"},
+                              {"not_measured_columns", {1}}, {"paper", {1, 1, 1}}});
+  const SweepSpec spec = parseSweepSpec(document, kSpecFile);
+  const SweepPlan plan = planSweep(spec, {});
+  std::map<std::size_t, json> records;
+  const std::map<std::string, double> ms = {{"sm", 2}, {"vsm", 4}, {"esm", 8}, {"pcf", 6}, {"groundtruth", 20}};
+  for (std::size_t i = 0; i < plan.cells.size(); ++i) records[i] = fakeRecord(plan.cells[i], ms.at(plan.cells[i].technique), 1, 1 << 20);
+  const SweepTable table = buildSweepTable(spec, plan, records);
+  ASSERT_EQ(table.rows.size(), 6u);
+  EXPECT_TRUE(table.hasRatios);
+  EXPECT_DOUBLE_EQ(*table.rows[0].ours[0], 3.0);        // G-buffer 1 + technique 2
+  EXPECT_DOUBLE_EQ(*table.rows[1].ours[0], (5.0 + 9.0) / 2);  // mean of vsm and esm frames
+  EXPECT_DOUBLE_EQ(*table.rows[1].oursRatio[0], 7.0 / 3.0);
+  EXPECT_DOUBLE_EQ(*table.rows[1].paperRatio[0], 2.0);
+  EXPECT_FALSE(table.rows[1].paperRatio[1]);  // the paper gives no figure there
+  EXPECT_DOUBLE_EQ(*table.rows[4].ours[0], 2.0);        // gbuffer 1 + shadow-map 1
+  EXPECT_TRUE(table.rows[5].ours[0].has_value());
+  EXPECT_FALSE(table.rows[5].ours[1].has_value());      // not measured in column 1 only
+  // A missing record reads as "—", never as zero.
+  records.erase(plan.entries[2][1].front());
+  EXPECT_FALSE(buildSweepTable(spec, plan, records).rows[2].ours[1].has_value());
+  // A pass the technique lacks is an input error naming the spec's row.
+  document["rows"][4]["passes"] = {"edt"};
+  const SweepSpec bad = parseSweepSpec(document, kSpecFile);
+  EXPECT_THROW(buildSweepTable(bad, planSweep(bad, {}), records), InputError);
+}
+
+TEST(SweepTable, MarkdownHasThePapersRowsAndColumns) {
+  const SweepSpec spec = parseSweepSpec(tinySpec(), kSpecFile);
+  const SweepTable table = buildSweepTable(spec, planSweep(spec, {}), {});
+  const std::string md = sweepTableMarkdown(table, {{"command", "x"}, {"machine", "y"}, {"backend", "z"}});
+  std::istringstream lines(md);
+  int tableLines = 0;
+  std::string header;
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind("|", 0) == 0 && ++tableLines == 1) header = line;
+  EXPECT_EQ(tableLines, 2 + 4);  // header, separator, one line per row
+  EXPECT_NE(header.find("a ours | a paper |"), std::string::npos) << header;
+  EXPECT_NE(header.find("c ours ×SM | c paper ×SM |"), std::string::npos) << header;
+  EXPECT_NE(md.find("- backend: z"), std::string::npos);
+}
+
+// The bundled paper specs (paper/): one per table, shaped as in the paper.
+TEST(SweepPaperSpecs, EachTableHasThePapersShape) {
+  struct Shape {
+    const char* name;
+    std::size_t rows, columns;
+  };
+  const std::vector<Shape> shapes = {
+      {"gi2016-table2", 4, 4},       // Macedo & Apolinário, GI 2016, Table 2: 4 techniques × 512²..4096²
+      {"gi2016-table3", 4, 3},       // Table 3: × SD, HD, Full HD
+      {"gi2016-table4", 4, 3},       // Table 4: × 15 000, 100 000, 750 000 polygons
+      {"gi2016-table5", 14, 4},      // Table 5: 6 + 4 + 4 rows (3×3, 10×10, 17×17) × 512²..4096²
+      {"gi2016-figure9", 11, 4},     // Figure 9: memory per technique × 512²..4096²
+      {"edtsm-star-table1", 18, 4},  // EDTSM* Table 1: 3 scenes × 6 methods × 512²..4096²
+      {"edtsm-star-table2", 18, 3},  // Table 2: × 480p, 720p, 1080p
+      {"edtsm-star-table3", 18, 4},  // Table 3: × kernel 7², 15², 23², 31²
+      {"edtsm-star-table4", 21, 3},  // Table 4: 3 scenes × 7 steps × 480p, 720p, 1080p
+  };
+  std::set<std::string> listed;
+  for (const auto& shape : shapes) {
+    const fs::path file = fs::path(TESTBED_SOURCE_DIR) / "paper" / (std::string(shape.name) + ".json");
+    SCOPED_TRACE(file.string());
+    const SweepSpec spec = loadSweepSpec(file);
+    EXPECT_EQ(spec.name, shape.name);
+    const SweepTable table = buildSweepTable(spec, planSweep(spec, {}), {});
+    EXPECT_EQ(table.rows.size(), shape.rows);
+    EXPECT_EQ(table.columns.size(), shape.columns);
+    for (const auto& row : table.rows) EXPECT_EQ(row.paper.size(), shape.columns);
+    listed.insert(file.filename().string());
+  }
+  for (const auto& entry : fs::directory_iterator(fs::path(TESTBED_SOURCE_DIR) / "paper")) {
+    if (entry.path().extension() == ".json") {
+      EXPECT_TRUE(listed.count(entry.path().filename().string())) << entry.path() << " has no shape test";
+    }
+  }
+}
+
+// The papers' polygon counts (GI 2016 Tables 2-5: Dragon ≈ 100 000; Table 4: 15 000,
+// 100 000, 750 000), within 10 %, counting every triangle the GPU draws.
+TEST(SweepPaperSpecs, SceneTriangleCountsMatchThePapers) {
+  const std::vector<std::pair<const char*, double>> counts = {
+      {"gi2016_15k.json", 15000}, {"gi2016_dragon_100k.json", 100000}, {"gi2016_750k.json", 750000}};
+  for (const auto& [file, paper] : counts) {
+    const Scene scene = loadScene(fs::path(TESTBED_SOURCE_DIR) / "paper" / "scenes" / file);
+    double triangles = 0;
+    for (const auto& object : scene.objects) triangles += double(object.mesh.n_faces());
+    EXPECT_NEAR(triangles, paper, 0.1 * paper) << file;
+  }
+}
+
+}  // namespace
+}  // namespace testbed

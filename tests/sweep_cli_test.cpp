@@ -1,0 +1,143 @@
+// `testbed sweep` and `testbed merge` end to end (README "Paper runs"): bad specs and
+// shards are one line and exit 2 with nothing written; a whole run writes the records,
+// table, plot and close-up figure; shards joined by merge hold the same cells as a whole
+// run; merge refuses shards of other specs or builds, missing or doubled shards, and keeps
+// records of different backends in tables of their own.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/sweep_test_support.h"
+
+namespace testbed::test {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+TEST(CliSweep, BadSpecsAndShardsAreOneLineAndWriteNothing) {
+  ScratchDir tmp("sweep-bad");
+  json spec = json::parse(readText(tinySpecFile()));
+  spec["scenes"]["wall"] = (fs::path(TESTBED_SOURCE_DIR) / "scenes" / "wall.json").string();
+  spec["rows"][1]["colour"] = "red";
+  writeText(tmp / "unknown-key.json", spec.dump());
+  spec["rows"][1].erase("colour");
+  spec["columns"][0]["shadow_map"] = "big";
+  writeText(tmp / "wrong-type.json", spec.dump());
+  writeText(tmp / "nan.json", R"({"name": "x", "citation": "c", "scenes": {}, "columns": [NaN], "rows": []})");
+  struct Case {
+    std::vector<std::string> args;
+    std::string expected;
+  };
+  const std::vector<Case> cases = {
+      {{"--spec", (tmp / "unknown-key.json").string()}, "unknown-key.json: rows[1].colour: unknown key"},
+      {{"--spec", (tmp / "wrong-type.json").string()}, "wrong-type.json: columns[0].shadow_map: expected an integer"},
+      {{"--spec", (tmp / "nan.json").string()}, "nan.json: not valid JSON"},
+      {{"--spec", (tmp / "missing.json").string()}, "missing.json: cannot open"},
+      {{"--spec", tinySpecFile().string(), "--shard", "3/2"}, "--shard: expected K/N"},
+      {{"--spec", tinySpecFile().string(), "--size", "big"}, "--size: expected WxH"},
+  };
+  for (const auto& c : cases) {
+    std::vector<std::string> args = {"sweep", "--out", (tmp / "out").string()};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    const CommandResult run = runTestbed(args);
+    EXPECT_EQ(run.exitCode, 2) << run.describe();
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.describe();
+    EXPECT_NE(run.err.find(c.expected), std::string::npos) << run.describe();
+    EXPECT_FALSE(fs::exists(tmp / "out")) << run.describe();
+  }
+}
+
+TEST(CliSweep, WholeRunWritesRecordsTableAndFigure) {
+  ScratchDir tmp("sweep-whole");
+  const CommandResult run = runTestbed({"sweep", "--spec", tinySpecFile().string(), "--out", (tmp / "out").string()});
+  ASSERT_EQ(run.exitCode, 0) << run.describe();
+  EXPECT_NE(run.err.find("[6/6] pcf on wall (160x90, map 128²"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("ETA"), std::string::npos) << run.err;
+  const json records = json::parse(readText(tmp / "out" / "records.json"));
+  ASSERT_EQ(records.size(), 6u);  // per map size: groundtruth, sm, pcf
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    EXPECT_EQ(records[i]["cell"], i);
+    EXPECT_TRUE(records[i]["error"].is_object()) << records[i].dump();
+  }
+  const std::string md = readText(tmp / "out" / "tiny.md");
+  EXPECT_NE(md.find("| PCF 3 × 3 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("- command: testbed sweep"), std::string::npos) << md;
+  EXPECT_NE(md.find("- backend: osmesa"), std::string::npos) << md;
+  for (const char* file : {"tiny.json", "tiny.png", "tiny.svg", "tiny-closeup-wall.png", "sweep.json", "spec.json"})
+    EXPECT_TRUE(fs::exists(tmp / "out" / file)) << file;
+}
+
+TEST(CliMerge, ShardsJoinIntoTheWholeRunsCellsAndMismatchesAreRefused) {
+  ScratchDir tmp("sweep-merge");
+  const std::string spec = tinySpecFile().string();
+  for (const char* shard : {"1/2", "2/2"}) {
+    const CommandResult run = runTestbed({"sweep", "--spec", spec, "--shard", shard, "--out",
+                                (tmp / ("shard" + std::string(1, shard[0]))).string()});
+    ASSERT_EQ(run.exitCode, 0) << run.describe();
+  }
+  const CommandResult whole = runTestbed({"sweep", "--spec", spec, "--no-plot", "--out", (tmp / "whole").string()});
+  ASSERT_EQ(whole.exitCode, 0) << whole.describe();
+  const CommandResult merged = runTestbed({"merge", "--no-plot", "--out", (tmp / "merged").string(), (tmp / "shard1").string(),
+                                 (tmp / "shard2").string()});
+  ASSERT_EQ(merged.exitCode, 0) << merged.describe();
+  EXPECT_EQ(cellsOf(json::parse(readText(tmp / "merged" / "records.json"))),
+            cellsOf(json::parse(readText(tmp / "whole" / "records.json"))));
+  EXPECT_TRUE(fs::exists(tmp / "merged" / "tiny.md"));
+  EXPECT_TRUE(fs::exists(tmp / "merged" / "tiny-closeup-wall.png"));
+
+  // Another spec (other overrides count as another spec), another build, a missing or doubled shard.
+  ASSERT_EQ(runTestbed({"sweep", "--spec", spec, "--shard", "2/2", "--shadow-map", "32", "--out", (tmp / "other").string()})
+                .exitCode,
+            0);
+  fs::copy(tmp / "shard2", tmp / "rebuilt", fs::copy_options::recursive);
+  json manifest = json::parse(readText(tmp / "rebuilt" / "sweep.json"));
+  manifest["build"] = "0000000000000000";
+  writeText(tmp / "rebuilt" / "sweep.json", manifest.dump());
+  struct Case {
+    std::vector<std::string> shards;
+    std::string expected;
+  };
+  const std::vector<Case> cases = {
+      {{"shard1", "other"}, "other/sweep.json: spec_fingerprint: another spec"},
+      {{"shard1", "rebuilt"}, "rebuilt/sweep.json: build: made by another testbed build"},
+      {{"shard1"}, "merge: shard 2/2 is missing"},
+      {{"shard1", "shard1"}, "shard1/sweep.json: shard: 1/2 given twice"},
+      {{"shard1", "nowhere"}, "nowhere/sweep.json: missing"},
+  };
+  for (const auto& c : cases) {
+    std::vector<std::string> args = {"merge", "--no-plot", "--out", (tmp / "refused").string()};
+    for (const auto& s : c.shards) args.push_back((tmp / s).string());
+    const CommandResult run = runTestbed(args);
+    EXPECT_EQ(run.exitCode, 2) << run.describe();
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.describe();
+    EXPECT_NE(run.err.find(c.expected), std::string::npos) << run.describe();
+    EXPECT_FALSE(fs::exists(tmp / "refused")) << run.describe();
+  }
+
+  // A shard run on another backend: its records go to a table of their own.
+  json records = json::parse(readText(tmp / "shard2" / "records.json"));
+  for (auto& r : records) r["backend"] = "egl: NVIDIA H200";
+  writeText(tmp / "shard2" / "records.json", records.dump());
+  const CommandResult apart = runTestbed({"merge", "--no-plot", "--out", (tmp / "apart").string(), (tmp / "shard1").string(),
+                                (tmp / "shard2").string()});
+  ASSERT_EQ(apart.exitCode, 0) << apart.describe();
+  EXPECT_TRUE(fs::exists(tmp / "apart" / "tiny.egl-nvidia-h200.md"));
+  EXPECT_FALSE(fs::exists(tmp / "apart" / "tiny.md"));
+  const std::string egl = readText(tmp / "apart" / "tiny.egl-nvidia-h200.md");
+  EXPECT_NE(egl.find("- backend: egl: NVIDIA H200"), std::string::npos) << egl;
+  EXPECT_NE(egl.find("—"), std::string::npos) << egl;  // shard 1's cells are not in this table
+}
+
+}  // namespace
+}  // namespace testbed::test
