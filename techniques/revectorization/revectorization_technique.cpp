@@ -104,19 +104,22 @@ std::vector<std::pair<std::string, ImageF>> Common::debugImages() const {
   return {};
 }
 
-void SinglePassTechnique::configureOwn(const ParameterSet& parameters) {
+void SinglePassTechnique::configure(const ParameterSet& parameters) {
+  shadowMap_.configure(parameters);
   common_.configure(parameters);
   configureTechnique(parameters);
 }
 
-void SinglePassTechnique::setUniforms(const Program& program) const {
-  common_.setLibraryUniforms(program);
-  setTechniqueUniforms(program);
-}
-
-// Untimed: the debug view never changes the timed pass.
-void SinglePassTechnique::afterTimedPasses(const FrameInputs& in, const Texture& shadowMap) {
-  common_.renderDebug(in, shadowMap, bothSides_);
+void SinglePassTechnique::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
+  shadowMap_.render(in, timer);
+  const auto bind = [&](const Program& program) {
+    bindReceiverInputs(program, in);
+    common_.bindLibrary(program, shadowMap_.depth());
+    setTechniqueUniforms(program);
+  };
+  screen_.draw(in, out, timer, bind, "classify", "revectorize");
+  // Untimed: the debug view never changes the timed passes.
+  common_.renderDebug(in, shadowMap_.depth(), bothSides_);
 }
 
 }  // namespace testbed::revectorization

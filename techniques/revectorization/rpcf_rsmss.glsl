@@ -4,6 +4,8 @@
 #include "techniques/revectorization/rsmss.glsl"
 #include "techniques/revectorization/rpcf.glsl"
 
+bool rpcfRsmssClassify(vec2 uv, float depth, out float v) { return rpcfClassify(uv, depth, true, v); }
+
 float rpcfRsmssVisibility(vec2 uv, float depth) {
   int h = uKernel / 2;
   vec2 texel = 1.0 / vec2(uShadowMapSize);

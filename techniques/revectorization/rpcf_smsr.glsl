@@ -5,6 +5,8 @@
 #include "techniques/revectorization/smsr.glsl"
 #include "techniques/revectorization/rpcf.glsl"
 
+bool rpcfSmsrClassify(vec2 uv, float depth, out float v) { return rpcfClassify(uv, depth, uImproved == 1, v); }
+
 float rpcfSmsrVisibility(vec2 uv, float depth) {
   int h = uKernel / 2;
   vec2 texel = 1.0 / vec2(uShadowMapSize);

@@ -19,6 +19,13 @@ float rsmssSigned(RvAxis a) {
   return a.kind == RV_U ? -max(a.alpha, 1e-6) : max(a.alpha, 1e-6);
 }
 
+// True, with the visibility v, where the sample's texel is no edge (v = s then).
+bool rsmssClassify(vec2 uv, float depth, out float v) {
+  RvSample r = rvClassify(uv, depth, true);
+  v = r.s;
+  return !r.edge;
+}
+
 // Visibility in [0,1] of the light-space sample (uv, light depth).
 float rsmssVisibility(vec2 uv, float depth) {
   RvSample r = rvSample(uv, depth, true);

@@ -33,6 +33,13 @@ float smsrImproved(RvSample r) {
   return (1.0 - r.s) + (2.0 * r.s - 1.0) * (r.x.alpha + r.y.alpha) < 0.5 ? 0.0 : 1.0;
 }
 
+// True, with the visibility v, where the sample's texel is no edge (v = s then).
+bool smsrClassify(vec2 uv, float depth, out float v) {
+  RvSample r = rvClassify(uv, depth, uImproved == 1);
+  v = r.s;
+  return !r.edge;
+}
+
 // Visibility of the light-space sample (uv, light depth): 1 lit, 0 shadow.
 float smsrVisibility(vec2 uv, float depth) {
   RvSample r = rvSample(uv, depth, uImproved == 1);

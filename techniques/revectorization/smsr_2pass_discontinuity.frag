@@ -16,6 +16,6 @@ void main() {
     return;
   }
   vec3 light = lightSpace(r.position);
-  RvSample s = rvSample(light.xy, light.z, false);
+  RvSample s = rvClassify(light.xy, light.z, false);  // d_c only: no traversal
   outDisc = vec4(s.s == 1.0 ? rvCompress(s.d, s.s).rg : vec2(0.0), 1.0 - s.s, 1.0);
 }
