@@ -3,7 +3,7 @@
 // revectorization_screen.glsl (a classifying draw, then the edge pixels).
 #include "techniques/revectorization/rpcf_rsmss.glsl"
 
-float rvScreenVisibility(vec2 uv, float z) { return rpcfRsmssVisibility(uv, z); }
+float rvScreenVisibility(vec2 uv, float z) { return rpcfRsmssEdgeVisibility(uv, z); }
 bool rvScreenClassify(vec2 uv, float z, out float v) { return rpcfRsmssClassify(uv, z, v); }
 
 #include "techniques/revectorization/revectorization_screen.glsl"

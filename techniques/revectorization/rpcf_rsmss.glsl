@@ -14,3 +14,10 @@ float rpcfRsmssVisibility(vec2 uv, float depth) {
     for (int x = -h; x <= h; ++x) sum += rsmssVisibility(uv + vec2(x, y) * texel, depth);
   return sum / float(uKernel * uKernel);
 }
+
+// The same number as rpcfRsmssVisibility, computing only the edge taps (rpcfNextEdgeTap).
+float rpcfRsmssEdgeVisibility(vec2 uv, float depth) {
+  RpcfTaps taps = rpcfBeginTaps(uv, depth, true);
+  while (rpcfNextEdgeTap(taps)) taps.sum += rsmssVisibility(taps.tapUv, depth);
+  return rpcfEndTaps(taps);
+}

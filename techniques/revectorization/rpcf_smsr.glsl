@@ -15,3 +15,10 @@ float rpcfSmsrVisibility(vec2 uv, float depth) {
     for (int x = -h; x <= h; ++x) sum += smsrVisibility(uv + vec2(x, y) * texel, depth);
   return sum / float(uKernel * uKernel);
 }
+
+// The same number as rpcfSmsrVisibility, computing only the edge taps (rpcfNextEdgeTap).
+float rpcfSmsrEdgeVisibility(vec2 uv, float depth) {
+  RpcfTaps taps = rpcfBeginTaps(uv, depth, uImproved == 1);
+  while (rpcfNextEdgeTap(taps)) taps.sum += smsrVisibility(taps.tapUv, depth);
+  return rpcfEndTaps(taps);
+}
