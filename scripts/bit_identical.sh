@@ -17,7 +17,8 @@ for scene in "$root"/scenes/*.json; do
   for side in before after; do
     binary=$before; [[ $side == after ]] && binary=$after
     "$binary" compare --scene "$scene" --techniques "$techniques" --size "$size" --shadow-map "$map" \
-      "$@" --out "$work/$side/$name" > /dev/null 2>&1
+      "$@" --out "$work/$side/$name" > "$work/log" 2>&1 ||
+      { echo "compare failed: $binary on $name" >&2; tail -3 "$work/log" >&2; exit 2; }
   done
   for exr in "$work/before/$name"/*.exr; do
     file=$(basename "$exr")

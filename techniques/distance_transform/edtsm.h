@@ -44,7 +44,8 @@ class EdtShadowMapping : public ShadowTechnique {
   ShadowMapPass shadowMap_;
   ScreenPass screen_;
   FeatureTransformPass featureTransform_;
-  Program rbsmProgram_, seedsProgram_, penumbraProgram_, filterProgram_;
+  revectorization::EdgeSplitPass rbsmPass_{"techniques/distance_transform/edtsm_rbsm.frag"};
+  Program seedsProgram_, penumbraProgram_, filterProgram_;
   ScreenTexture hard_, seeds_, intensity_, filtered_;
 };
 

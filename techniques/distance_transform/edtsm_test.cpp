@@ -44,7 +44,7 @@ TEST_F(Edtsm, PassesAndMemory) {
   for (const std::string id : {"edtsm", "edtsm-star"}) {
     const TechniqueRun r = run(runner, id);
     EXPECT_EQ(r.times.order,
-              (std::vector<std::string>{"shadow-map", "rbsm", "seeds", "edt", "penumbra", "mean-filter"}));
+              (std::vector<std::string>{"shadow-map", "rbsm-classify", "rbsm", "seeds", "edt", "penumbra", "mean-filter"}));
     // An R8 and three RG32F screen textures at least, plus the feature transform's own.
     EXPECT_GT(r.memoryBytes, sm.memoryBytes + 320u * 180u * (1 + 8 + 8 + 8));
   }
