@@ -2,10 +2,17 @@
 
 namespace testbed::revectorization {
 
+void EdgeSplitPass::setDefines(const std::string& defines) {
+  if (defines == defines_) return;
+  defines_ = defines;
+  classify_ = Program();
+  edges_ = Program();
+}
+
 void EdgeSplitPass::prepare(const VisibilityTarget& out) {
   if (!classify_) {
-    classify_ = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_, "#define RV_CLASSIFY 1\n");
-    edges_ = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_);
+    classify_ = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_, defines_ + "#define RV_CLASSIFY 1\n");
+    edges_ = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_, defines_);
     empty_ = VertexArray::create();
   }
   const Texture& visibility = out.texture;

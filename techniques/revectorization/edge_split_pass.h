@@ -19,6 +19,8 @@ class EdgeSplitPass {
   // `fragmentKey`: a shader ending in revectorization_screen.glsl.
   explicit EdgeSplitPass(std::string fragmentKey) : fragmentKey_(std::move(fragmentKey)) {}
 
+  // Prepended to both programs' sources (after #version); a change rebuilds them.
+  void setDefines(const std::string& defines);
   // `bind` sets each program's uniforms and textures. Timed as `classifyPass`, then
   // `edgePass`.
   void draw(const FrameInputs& in, const VisibilityTarget& out, PassTimer& timer,
@@ -29,7 +31,7 @@ class EdgeSplitPass {
   void prepare(const VisibilityTarget& out);
   void drawScreen(const Program& program, glm::ivec2 size) const;
 
-  std::string fragmentKey_;
+  std::string fragmentKey_, defines_;
   Program classify_, edges_;
   Texture marks_;  // depth 0: edge pixel, 1: answered by the classifying draw
   Framebuffer target_;

@@ -117,6 +117,7 @@ void SinglePassTechnique::render(const FrameInputs& in, PassTimer& timer, const 
     common_.bindLibrary(program, shadowMap_.depth());
     setTechniqueUniforms(program);
   };
+  screen_.setDefines(shaderDefines());
   screen_.draw(in, out, timer, bind, "classify", "revectorize");
   // Untimed: the debug view never changes the timed passes.
   common_.renderDebug(in, shadowMap_.depth(), bothSides_);

@@ -67,6 +67,8 @@ class SinglePassTechnique : public ShadowTechnique {
   SinglePassTechnique(std::string fragmentKey, bool bothSides) : bothSides_(bothSides), screen_(std::move(fragmentKey)) {}
   virtual void configureTechnique(const ParameterSet& parameters) = 0;
   virtual void setTechniqueUniforms(const Program& program) const = 0;
+  // Compile-time settings of the screen pass's shaders.
+  virtual std::string shaderDefines() const { return {}; }
   bool bothSides_;
 
  private:

@@ -1,5 +1,11 @@
-// The kernel width shared by the two RPCF variants (rpcf_smsr.glsl, rpcf_rsmss.glsl).
-uniform int uKernel;  // odd: the k×k block is centred on the receiver's texel
+// The kernel width shared by the two RPCF variants (rpcf_smsr.glsl, rpcf_rsmss.glsl), odd:
+// the k×k block is centred on the receiver's texel. The screen passes compile it in
+// (RPCF_KERNEL), so the tap loops unroll; the unit-test probe sets the uniform.
+#ifdef RPCF_KERNEL
+const int uKernel = RPCF_KERNEL;
+#else
+uniform int uKernel;
+#endif
 
 // The shadow tests of the texels (centre.x − h − 1 … centre.x + h + 1, centre.y + dy) as
 // bits 0 … k + 1 of a row mask (callers keep the block inside the map).
