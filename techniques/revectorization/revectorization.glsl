@@ -7,7 +7,7 @@
 //   floor(uv·size) and p = fract(uv·size) its position inside that texel.
 // - s ∈ {0 shadow, 1 lit}: the nearest depth test of glsl/shadow_test.glsl.
 // - d = |N − s| for the 4 neighbours (left, right, bottom, top) one texel apart (eq. 3 of
-//   seed 004). Neighbours outside the map count as equal to s: the map's border (which
+//   EDTSM*). Neighbours outside the map count as equal to s: the map's border (which
 //   reads as shadow) is not an edge of any occluder, and revectorizing along it would
 //   bend the frustum's straight border.
 // - For each axis, the traversal (computeRD) walks both directions and gives signed step

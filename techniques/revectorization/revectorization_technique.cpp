@@ -23,8 +23,8 @@ std::vector<ParameterSpec> commonParameters() {
 
 ParameterSpec visibilityParameter() {
   return ParameterSpec::choice("visibility", "conservative", {"conservative", "improved"},
-                               "conservative: lit side only, GI 2016 / seed 004 eq. 4; "
-                               "improved: both sides, seed 004 eq. 7");
+                               "conservative: lit side only, GI 2016 / EDTSM* eq. 4; "
+                               "improved: both sides, EDTSM* eq. 7");
 }
 
 ParameterSpec kernelParameter() {

@@ -15,7 +15,7 @@ namespace testbed::revectorization {
 
 // max_search, epsilon, bias, debug (the family's common parameters).
 std::vector<ParameterSpec> commonParameters();
-// `visibility` of smsr and rpcf-smsr: conservative (seed 004 eq. 4) or improved (eq. 7).
+// `visibility` of smsr and rpcf-smsr: conservative (EDTSM* eq. 4) or improved (eq. 7).
 ParameterSpec visibilityParameter();
 // `kernel` of the RPCF variants.
 ParameterSpec kernelParameter();

@@ -7,7 +7,7 @@
 // The paper's own 31 comparisons are in its missing supplementary material; our signs:
 // r = +α for an L-shaped axis (one end found), r = −tent for a U-shaped axis (both ends),
 // r = 0 for a straight run (no end). So straight runs keep s, an L corner ramps from the
-// corner (its 0.5 contour is the improved SMSR line, seed 004 eq. 7), an axis that is a
+// corner (its 0.5 contour is the improved SMSR line, EDTSM* eq. 7), an axis that is a
 // U next to an L ramps along the L axis only, and a texel that is a U in both axes (an
 // isolated texel) takes the other side's value. On the edge between a lit and a shadowed
 // run of an ideal staircase the two sides give the same value, so the result is

@@ -1,7 +1,7 @@
 #version 450 core
 // smsr-2pass, pass 2 and merge (Bondarev 2014): the screen-space search of
 // smsr_2pass_search.glsl, then single-pass SMSR's conservative clipping of the ONDS
-// (smsr.glsl, seed 004 eq. 4): Bondarev's own clipping function is not given in full
+// (smsr.glsl, EDTSM* eq. 4): Bondarev's own clipping function is not given in full
 // (GI 2016 §4.1 says so), and the conservative one is its single-pass successor. Drawn as
 // the family's screen pass (revectorization_screen.glsl): pixels without an entering
 // discontinuity in pass 1's map keep their shadow test, the others are searched.
