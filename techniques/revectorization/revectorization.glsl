@@ -143,11 +143,11 @@ RvSample rvClassify(vec2 uv, float z, bool bothSides) {
   r.d = vec4(0.0);
   r.x = RvAxis(1.0, RV_NO_END);
   r.y = RvAxis(1.0, RV_NO_END);
-  if (!rvInsideMap(r.texel)) {  // outside the map: shadow (border depth 0), nothing to do
-    r.s = shadowTest(uv, z, uBias);
-    return r;
-  }
-  r.s = rvTest(z, rvStoredDepth(r.texel));
+  // Outside the map the border depth 0 answers, as shadowTest's lookup gets it (one
+  // lookup either way: a shader runs both sides of a branch on some rasterizers).
+  bool inside = rvInsideMap(r.texel);
+  r.s = rvTest(z, inside ? rvStoredDepth(r.texel) : 0.0);
+  if (!inside) return r;  // no edge outside the map
   if (r.s == 0.0 && !bothSides) return r;
   r.d = rvDiscontinuity(r.texel, z, r.s);
   r.edge = r.d != vec4(0.0);
