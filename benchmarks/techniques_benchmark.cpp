@@ -7,7 +7,9 @@
 // Own flags (before or after Google Benchmark's): --scenes=DIR (default: the bundled
 // scenes/), --shadow-maps=512,1024 (default 1024), --size=WxH (default 1280x720),
 // --backend=osmesa|egl, --plugin=PATH (repeatable: techniques from a plugin library,
-// testbed/technique/plugin.h). Counters: memory_bytes, cpu_ms, and one "<pass>_ms" per pass.
+// testbed/technique/plugin.h). Counters: memory_bytes, cpu_ms, one "<pass>_ms" per pass,
+// and x_sm / x_sm_frame: the frame time over sm's on the same runner, measured right after
+// the benchmark (technique only, and with the G-buffer pass added to both: the whole frame).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -17,6 +19,7 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#include <vector>
 
 #include "testbed/app/frame_runner.h"
 #include "testbed/app/plugins.h"
@@ -77,18 +80,33 @@ testbed::FrameRunner& runnerFor(const std::string& scene, const testbed::RenderS
   return *runner;
 }
 
+// sm's frame time on `runner`: the median of 3 frames after a warm-up.
+double smFrameMs(testbed::FrameRunner& runner, testbed::TimingSource source) {
+  const auto& sm = testbed::findTechnique("sm");
+  const auto parameters = testbed::resolveParameters(sm.info->id, sm.info->parameters, {});
+  testbed::TechniqueSession session(runner, sm, parameters);
+  session.renderFrame();
+  std::vector<double> ms;
+  for (int i = 0; i < 3; ++i) ms.push_back(testbed::frameTimeMs(session.renderFrame().times, source));
+  std::sort(ms.begin(), ms.end());
+  return ms[1];
+}
+
 void runTechnique(benchmark::State& state, std::string techniqueId, std::string scene,
                   testbed::RenderSettings settings) {
   const auto& technique = testbed::findTechnique(techniqueId);
   const auto parameters = testbed::resolveParameters(technique.info->id, technique.info->parameters, {});
-  testbed::TechniqueSession session(runnerFor(scene, settings), technique, parameters);
+  testbed::FrameRunner& runner = runnerFor(scene, settings);
+  testbed::TechniqueSession session(runner, technique, parameters);
   session.renderFrame();  // warm-up
   const auto source = testbed::timingSourceFor(g_fixture.context->description());
   std::map<std::string, double> passTotals;
-  double cpuTotal = 0, gpuTotal = 0;
+  double cpuTotal = 0, gpuTotal = 0, frameTotal = 0;
   for (auto _ : state) {
     const auto frame = session.renderFrame();
-    state.SetIterationTime(testbed::frameTimeMs(frame.times, source) * 1e-3);
+    const double frameMs = testbed::frameTimeMs(frame.times, source);
+    state.SetIterationTime(frameMs * 1e-3);
+    frameTotal += frameMs;
     const auto& passes = source == testbed::TimingSource::Wall ? frame.times.wallPassMs : frame.times.passMs;
     for (const auto& [name, ms] : passes) passTotals[name] += ms;
     cpuTotal += frame.cpuMs;
@@ -99,6 +117,10 @@ void runTechnique(benchmark::State& state, std::string techniqueId, std::string 
   state.counters["cpu_ms"] = cpuTotal / n;
   state.counters["gpu_query_ms"] = gpuTotal / n;
   for (const auto& [name, total] : passTotals) state.counters[name + "_ms"] = total / n;
+  const double smMs = smFrameMs(runner, source);
+  const double gbufferMs = testbed::frameTimeMs(runner.gbufferTimes(), source);
+  state.counters["x_sm"] = frameTotal / n / smMs;
+  state.counters["x_sm_frame"] = (frameTotal / n + gbufferMs) / (smMs + gbufferMs);
   state.SetLabel(g_fixture.context->description());
 }
 

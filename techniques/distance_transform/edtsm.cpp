@@ -50,9 +50,8 @@ void EdtShadowMapping::bindScreenInputs(const Program& program, const FrameInput
 }
 
 void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
-  if (!rbsmProgram_) {
+  if (!seedsProgram_) {
     const auto program = [](const char* key) { return Program::graphics("testbed/render/fullscreen.vert", key); };
-    rbsmProgram_ = program("techniques/distance_transform/edtsm_rbsm.frag");
     seedsProgram_ = program("techniques/distance_transform/edtsm_seeds.frag");
     penumbraProgram_ = program("techniques/distance_transform/edtsm_penumbra.frag");
     filterProgram_ = program("techniques/distance_transform/edtsm_mean_filter.frag");
@@ -61,13 +60,15 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
   const float noReceiver[4] = {0, -1, 0, 0};  // value 0, depth −1: later passes skip it
   shadowMap_.render(in, timer);
   {
-    auto scope = timer.scope("rbsm");
+    auto scope = timer.scope("rbsm-classify");
     glClearNamedFramebufferfv(hard_.target.id(), GL_COLOR, 0, noReceiver);
-    bindScreenInputs(rbsmProgram_, in);
-    rbsm_.bindLibrary(rbsmProgram_, shadowMap_.depth());
-    rbsmProgram_.set("uImproved", improved_ ? 1 : 0);
-    screen_.draw(rbsmProgram_, hard_.target, in.size);
   }
+  const auto bindRbsm = [&](const Program& program) {
+    bindScreenInputs(program, in);
+    rbsm_.bindLibrary(program, shadowMap_.depth());
+    program.set("uImproved", improved_ ? 1 : 0);
+  };
+  rbsmPass_.draw(in, VisibilityTarget{hard_.target, hard_.texture}, timer, bindRbsm, "rbsm-classify", "rbsm");
   glBindTextureUnit(4, hard_.texture.id());
   {
     auto scope = timer.scope("seeds");

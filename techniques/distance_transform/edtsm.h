@@ -1,6 +1,6 @@
 #pragma once
 // Euclidean distance transform shadow mapping (Macedo & Apolinário, GI 2017; EDTSM* from
-// their improved anti-aliasing paper, seed 004): fixed-size penumbrae from RBSM's anti-aliased hard shadows. Passes, each timed:
+// their improved anti-aliasing paper, EDTSM*): fixed-size penumbrae from RBSM's anti-aliased hard shadows. Passes, each timed:
 //   shadow-map   the shared shadow map
 //   rbsm         single-pass SMSR's hard visibility (conservative for edtsm, improved for
 //                edtsm-star) and the camera depth into a screen texture
@@ -44,7 +44,8 @@ class EdtShadowMapping : public ShadowTechnique {
   ShadowMapPass shadowMap_;
   ScreenPass screen_;
   FeatureTransformPass featureTransform_;
-  Program rbsmProgram_, seedsProgram_, penumbraProgram_, filterProgram_;
+  revectorization::EdgeSplitPass rbsmPass_{"techniques/distance_transform/edtsm_rbsm.frag"};
+  Program seedsProgram_, penumbraProgram_, filterProgram_;
   ScreenTexture hard_, seeds_, intensity_, filtered_;
 };
 

@@ -1,5 +1,5 @@
 #version 450 core
-// EDTSM's edge-aware separable mean filter (seed 004 §3.4), one direction per draw. The
+// EDTSM's edge-aware separable mean filter (EDTSM* §3.4), one direction per draw. The
 // window is the user's world-space width seen at the receiver's distance (eqs. 9–10:
 // w_screen = w · z_screen / z_eye with z_screen = 1 / (2 tan(fov_y / 2)), a fraction of the
 // screen height), so the blur keeps its world size as the camera moves; only neighbours on

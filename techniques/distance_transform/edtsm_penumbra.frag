@@ -1,5 +1,5 @@
 #version 450 core
-// EDTSM's normalized distance (seed 004 eq. 8): D is the world-space distance from the
+// EDTSM's normalized distance (EDTSM* eq. 8): D is the world-space distance from the
 // receiver to its nearest seed (the exact screen-space feature transform); within half the
 // penumbra size P of a seed on the same surface the intensity is 1/2 - D/P on RBSM's
 // shadowed side and 1/2 + D/P on its lit side; elsewhere (and for P = 0) RBSM's hard

@@ -1,4 +1,4 @@
-// What EDTSM's screen passes share (seed 004 §3.3–3.4): the receiver's depth as the
+// What EDTSM's screen passes share (EDTSM* §3.3–3.4): the receiver's depth as the
 // camera's depth buffer would hold it, which decides whether two pixels lie on the same
 // surface ("edge awareness"; the paper's threshold is 2.5e-3 of that depth).
 //
@@ -6,7 +6,7 @@
 // the later passes must not look: off the receivers, and on receivers facing away from
 // the light. Those are shadowed by the facing rule, not by an occluder, so they make no
 // seeds, take no penumbra and stay out of the mean filter, and the terminator is not
-// softened (seed 004 keeps penumbrae apart from self-shadowing).
+// softened (EDTSM* keeps penumbrae apart from self-shadowing).
 #include "testbed/glsl/receiver.glsl"
 
 uniform mat4 uCameraViewProjection;

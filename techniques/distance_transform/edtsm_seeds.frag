@@ -1,5 +1,5 @@
 #version 450 core
-// EDTSM seeds (seed 004 §3.3): a receiver is a seed when one of its 8 neighbours on the
+// EDTSM seeds (EDTSM* §3.3): a receiver is a seed when one of its 8 neighbours on the
 // same surface has the other hard visibility (RBSM's result, 0 or 1). Pixels with depth −1
 // (off the receivers, facing away from the light) take no part.
 #include "techniques/distance_transform/edtsm_screen.glsl"

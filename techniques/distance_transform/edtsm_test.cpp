@@ -1,6 +1,6 @@
 // EDTSM and EDTSM*: the passes and their memory, the plumbing (P = 0 and no filter give
 // RBSM's hard shadow exactly), eq. 8's sides and range, and, against the shadow-volume
-// ground truth, that EDTSM* overestimates less than EDTSM (seed 004's claim) and neither
+// ground truth, that EDTSM* overestimates less than EDTSM (EDTSM*'s claim) and neither
 // leaks more than sm. Figures are printed for the closing note.
 #include <gtest/gtest.h>
 
@@ -44,7 +44,7 @@ TEST_F(Edtsm, PassesAndMemory) {
   for (const std::string id : {"edtsm", "edtsm-star"}) {
     const TechniqueRun r = run(runner, id);
     EXPECT_EQ(r.times.order,
-              (std::vector<std::string>{"shadow-map", "rbsm", "seeds", "edt", "penumbra", "mean-filter"}));
+              (std::vector<std::string>{"shadow-map", "rbsm-classify", "rbsm", "seeds", "edt", "penumbra", "mean-filter"}));
     // An R8 and three RG32F screen textures at least, plus the feature transform's own.
     EXPECT_GT(r.memoryBytes, sm.memoryBytes + 320u * 180u * (1 + 8 + 8 + 8));
   }
@@ -95,7 +95,7 @@ TEST_F(Edtsm, PenumbraSidesAndWidth) {
 }
 
 // Against the ground truth: EDTSM* is built on the improved RBSM, so next to the boundary
-// it overestimates less than EDTSM (seed 004's claim); neither adds leaks to sm's. Edge
+// it overestimates less than EDTSM (EDTSM*'s claim); neither adds leaks to sm's. Edge
 // mismatch is printed, not ordered: seeds on both sides of the hard edge take exactly 1/2,
 // and where the filtered ramp crosses 0.5 inside that plateau is a coin toss (on
 // dragon_sun EDTSM* comes out behind).

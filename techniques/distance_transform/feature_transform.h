@@ -1,7 +1,7 @@
 #pragma once
 // Exact Euclidean feature transform of a screen-space seed mask on the GPU: for every pixel,
 // the integer coordinates of its nearest seed (ties broken either way), or (-1, -1) when
-// the image has no seed. EDTSM (seed 004 §3.3) needs the seed itself, not only the
+// the image has no seed. EDTSM (EDTSM* §3.3) needs the seed itself, not only the
 // distance, to read that seed's world position from the G-buffer.
 //
 // Separable and linear time (Meijster, Roerdink & Hesselink 2000; Felzenszwalb &

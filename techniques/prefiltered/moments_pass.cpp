@@ -1,5 +1,7 @@
 #include "techniques/prefiltered/moments_pass.h"
 
+#include <string>
+
 #include "testbed/render/gpu_scene.h"
 #include "testbed/technique/technique.h"
 
@@ -78,7 +80,16 @@ void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsF
     depthFormat_ = depthFormat;
     allocate(in, format);
   }
-  if (!blurProgram_) blurProgram_ = Program::graphics("testbed/render/fullscreen.vert", "techniques/prefiltered/blur.frag");
+  if (blur_ > 1 && blurProgramRadius_ != blur_ / 2) {
+    const auto blurProgram = [&](const char* step) {
+      const std::string defines =
+          "#define BLUR_RADIUS " + std::to_string(blur_ / 2) + "\n#define BLUR_STEP " + step + "\n";
+      return Program::graphics("testbed/render/fullscreen.vert", "techniques/prefiltered/blur.frag", defines);
+    };
+    blurRows_ = blurProgram("ivec2(1, 0)");
+    blurColumns_ = blurProgram("ivec2(0, 1)");
+    blurProgramRadius_ = blur_ / 2;
+  }
   const glm::ivec2 size(in.shadowMapSize);
 
   {
@@ -109,16 +120,14 @@ void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsF
   auto scope = timer.scope("blur");
   if (blur_ > 1) {
     const std::vector<float> weights = blurWeights(blur_);
-    glProgramUniform1fv(blurProgram_.id(), blurProgram_.location("uWeights"), GLsizei(weights.size()),
-                        weights.data());
-    blurProgram_.set("uRadius", blur_ / 2);
-    blurProgram_.set("uSource", 0);
+    for (const Program* program : {&blurRows_, &blurColumns_}) {
+      glProgramUniform1fv(program->id(), program->location("uWeights"), GLsizei(weights.size()), weights.data());
+      program->set("uSource", 0);
+    }
     glBindTextureUnit(0, moments_.id());
-    blurProgram_.set("uStep", glm::ivec2(1, 0));
-    screen_.draw(blurProgram_, pingPongTarget_, size);
+    screen_.draw(blurRows_, pingPongTarget_, size);
     glBindTextureUnit(0, pingPong_.id());
-    blurProgram_.set("uStep", glm::ivec2(0, 1));
-    screen_.draw(blurProgram_, momentsTarget_, size);
+    screen_.draw(blurColumns_, momentsTarget_, size);
   }
   if (mips_) glGenerateTextureMipmap(moments_.id());
 }

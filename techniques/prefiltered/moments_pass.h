@@ -47,7 +47,8 @@ class MomentsPass {
   GLenum depthFormat_ = 0;
   Texture moments_, pingPong_, depth_;
   Framebuffer momentsTarget_, pingPongTarget_;
-  Program encode_, clear_, blurProgram_;
+  Program encode_, clear_, blurRows_, blurColumns_;
+  int blurProgramRadius_ = 0;  // the radius blurRows_ and blurColumns_ were built for
   ScreenPass screen_;
 };
 

@@ -7,7 +7,7 @@
 //   floor(uv·size) and p = fract(uv·size) its position inside that texel.
 // - s ∈ {0 shadow, 1 lit}: the nearest depth test of glsl/shadow_test.glsl.
 // - d = |N − s| for the 4 neighbours (left, right, bottom, top) one texel apart (eq. 3 of
-//   seed 004). Neighbours outside the map count as equal to s: the map's border (which
+//   EDTSM*). Neighbours outside the map count as equal to s: the map's border (which
 //   reads as shadow) is not an edge of any occluder, and revectorizing along it would
 //   bend the frustum's straight border.
 // - For each axis, the traversal (computeRD) walks both directions and gives signed step
@@ -29,17 +29,23 @@ bool rvInsideMap(ivec2 t) {
   return all(greaterThanEqual(t, ivec2(0))) && all(lessThan(t, uShadowMapSize));
 }
 
-float rvStoredDepth(ivec2 t) { return texture(uShadowMap, (vec2(t) + 0.5) / vec2(uShadowMapSize)).r; }
+// The stored depth of texel t (inside the map). texelFetch reads the very texel, and so
+// the very value, that shadowTestTexel's nearest lookup at the texel centre reads, without
+// its coordinate arithmetic.
+float rvStoredDepth(ivec2 t) { return texelFetch(uShadowMap, t, 0).r; }
+
+// The shadow test of glsl/shadow_test.glsl against an already fetched stored depth.
+float rvTest(float z, float stored) { return z - uBias <= stored ? 1.0 : 0.0; }
+
+// |test − s| of the texel t for light depth z; 0 outside the map (see the conventions).
+float rvDiffers(ivec2 t, float z, float s) {
+  return rvInsideMap(t) ? abs(rvTest(z, rvStoredDepth(t)) - s) : 0.0;
+}
 
 // 4-neighbour discontinuity (left, right, bottom, top) of texel t for light depth z.
 vec4 rvDiscontinuity(ivec2 t, float z, float s) {
-  const ivec2 offsets[4] = ivec2[4](ivec2(-1, 0), ivec2(1, 0), ivec2(0, -1), ivec2(0, 1));
-  vec4 d;
-  for (int i = 0; i < 4; ++i) {
-    ivec2 n = t + offsets[i];
-    d[i] = rvInsideMap(n) ? abs(shadowTestTexel(n, z, uBias) - s) : 0.0;
-  }
-  return d;
+  return vec4(rvDiffers(t + ivec2(-1, 0), z, s), rvDiffers(t + ivec2(1, 0), z, s),
+              rvDiffers(t + ivec2(0, -1), z, s), rvDiffers(t + ivec2(0, 1), z, s));
 }
 
 // The compressed discontinuity d_c of GI 2016 table 1: r = (2·left + right)/4,
@@ -56,16 +62,33 @@ vec3 rvCompress(vec4 d, float s) {
 // Sloped surfaces (GI 2016 §3.1): when the walked texel's stored depth lies within ε of
 // the receiver's depth, it is taken to be the receiver's own surface and z is lowered by
 // ε before the test; as in the authors' code the lowering accumulates along the walk.
+// Each texel is fetched once: the neighbour behind a step is the previous texel and the
+// one ahead is the next step's texel, so a step fetches the one ahead and the two beside
+// (3 fetches, not 5); the tests themselves are redone with the current z, as before.
 int rvComputeRD(ivec2 origin, ivec2 dir, float z, float s, vec4 dOrigin) {
+  ivec2 beside = abs(dir.yx);  // the perpendicular axis, towards +
+  bool towardsPositive = dir.x + dir.y > 0;
+  ivec2 t = origin + dir;
+  if (!rvInsideMap(t)) return -1;
+  float storedBehind = rvStoredDepth(origin);
+  float stored = rvStoredDepth(t);
   int n = 1;
   for (int i = 0; i < uMaxSearch; ++i) {
-    ivec2 t = origin + dir * n;
     if (!rvInsideMap(t)) return -n;
-    float stored = rvStoredDepth(t);
     if (abs(z - stored) < uEpsilon) z -= uEpsilon;
     float st = z - uBias <= stored ? 1.0 : 0.0;
     if (st != s) return n;
-    if (dot(rvDiscontinuity(t, z, s), dOrigin) == 0.0) return -n;
+    ivec2 ahead = t + dir;
+    float storedAhead = rvInsideMap(ahead) ? rvStoredDepth(ahead) : 0.0;
+    float behindDiffers = abs(rvTest(z, storedBehind) - s);  // behind is inside: origin or last step
+    float aheadDiffers = rvInsideMap(ahead) ? abs(rvTest(z, storedAhead) - s) : 0.0;
+    vec2 along = towardsPositive ? vec2(behindDiffers, aheadDiffers) : vec2(aheadDiffers, behindDiffers);
+    vec2 across = vec2(rvDiffers(t - beside, z, s), rvDiffers(t + beside, z, s));
+    vec4 d = dir.x != 0 ? vec4(along, across) : vec4(across, along);
+    if (dot(d, dOrigin) == 0.0) return -n;
+    storedBehind = stored;
+    stored = storedAhead;
+    t = ahead;
     ++n;
   }
   return -n;
@@ -104,29 +127,38 @@ struct RvSample {
   vec4 d;       // its discontinuity
   bool edge;    // traversed: an edge texel of a side the caller asked for
   RvAxis x, y;  // ONDS along the map's x and y axes (valid when edge)
+  ivec2 texel;  // the sample's texel
+  vec2 p;       // its position inside the texel
 };
 
-// Shadow test, discontinuity and (for edge texels) the ONDS of both axes. `bothSides`
-// false: only lit texels (entering discontinuities) are traversed, as single-pass SMSR.
-RvSample rvSample(vec2 uv, float z, bool bothSides) {
+// The part of rvSample every pixel needs: shadow test, discontinuity and whether the texel
+// is an edge to traverse (`edge`); the ONDS is left at "straight run". `bothSides` false:
+// only lit texels (entering discontinuities) are edges, as single-pass SMSR has it.
+RvSample rvClassify(vec2 uv, float z, bool bothSides) {
   RvSample r;
   vec2 t = uv * vec2(uShadowMapSize);
-  ivec2 texel = ivec2(floor(t));
-  vec2 p = t - floor(t);
+  r.texel = ivec2(floor(t));
+  r.p = t - floor(t);
   r.edge = false;
   r.d = vec4(0.0);
   r.x = RvAxis(1.0, RV_NO_END);
   r.y = RvAxis(1.0, RV_NO_END);
-  if (!rvInsideMap(texel)) {  // outside the map: shadow (border depth 0), nothing to do
-    r.s = shadowTest(uv, z, uBias);
-    return r;
-  }
-  r.s = shadowTestTexel(texel, z, uBias);
+  // Outside the map the border depth 0 answers, as shadowTest's lookup gets it (one
+  // lookup either way: a shader runs both sides of a branch on some rasterizers).
+  bool inside = rvInsideMap(r.texel);
+  r.s = rvTest(z, inside ? rvStoredDepth(r.texel) : 0.0);
+  if (!inside) return r;  // no edge outside the map
   if (r.s == 0.0 && !bothSides) return r;
-  r.d = rvDiscontinuity(texel, z, r.s);
-  if (r.d == vec4(0.0)) return r;
-  r.edge = true;
-  r.x = rvAxis(rvComputeRD(texel, ivec2(-1, 0), z, r.s, r.d), rvComputeRD(texel, ivec2(1, 0), z, r.s, r.d), p.x);
-  r.y = rvAxis(rvComputeRD(texel, ivec2(0, -1), z, r.s, r.d), rvComputeRD(texel, ivec2(0, 1), z, r.s, r.d), p.y);
+  r.d = rvDiscontinuity(r.texel, z, r.s);
+  r.edge = r.d != vec4(0.0);
+  return r;
+}
+
+// Shadow test, discontinuity and (for edge texels) the ONDS of both axes.
+RvSample rvSample(vec2 uv, float z, bool bothSides) {
+  RvSample r = rvClassify(uv, z, bothSides);
+  if (!r.edge) return r;
+  r.x = rvAxis(rvComputeRD(r.texel, ivec2(-1, 0), z, r.s, r.d), rvComputeRD(r.texel, ivec2(1, 0), z, r.s, r.d), r.p.x);
+  r.y = rvAxis(rvComputeRD(r.texel, ivec2(0, -1), z, r.s, r.d), rvComputeRD(r.texel, ivec2(0, 1), z, r.s, r.d), r.p.y);
   return r;
 }

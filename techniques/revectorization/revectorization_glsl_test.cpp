@@ -141,11 +141,11 @@ std::vector<Edge> staircases() {
   return edges;
 }
 
-// Improved SMSR (seed 004 eq. 7) and RSMSS put the edge closer to the true line than the
+// Improved SMSR (EDTSM* eq. 7) and RSMSS put the edge closer to the true line than the
 // stair: fewer wrongly classified samples than the shadow test. Conservative SMSR (eq. 4)
 // only ever adds shadow on the lit side (entering discontinuities), so its false-lit
 // samples are at most sm's; its line is parallel to the true one but half a texel into
-// the lit side (the overestimation seed 004 §3.1 describes), so it misclassifies about
+// the lit side (the overestimation EDTSM* §3.1 describes), so it misclassifies about
 // twice as many samples as the stair.
 TEST(RevectorizationGlsl, RevectorizedEdgeIsCloserToTheLineThanTheStair) {
   Probe& p = probe();
@@ -165,7 +165,7 @@ TEST(RevectorizationGlsl, RevectorizedEdgeIsCloserToTheLineThanTheStair) {
     EXPECT_LT(rsmss.total(), sm.total());
     EXPECT_LE(cons.falseLit, sm.falseLit);
     EXPECT_GE(cons.falseShadow, sm.falseShadow);
-    EXPECT_LT(impr.falseShadow, cons.falseShadow);  // seed 004: improved overestimates less
+    EXPECT_LT(impr.falseShadow, cons.falseShadow);  // EDTSM*: improved overestimates less
     smSum += sm.total(), consSum += cons.total(), imprSum += impr.total(), rsmssSum += rsmss.total();
   }
   std::printf("%-28s %20d %10d %10d %6d\n", "sum", smSum, consSum, imprSum, rsmssSum);

@@ -2,7 +2,7 @@
 // on the bundled scenes at 640×360 with 256² and 512² maps. Every figure is printed for
 // the closing note.
 //
-// What the data says (and these tests assert): improved SMSR (seed 004 eq. 7) beats sm on
+// What the data says (and these tests assert): improved SMSR (EDTSM* eq. 7) beats sm on
 // edge_mismatch_pct everywhere but on axis-aligned thin stripes (stacked_occluders, see
 // below); conservative SMSR (eq. 4, the GI 2016 function and smsr's
 // default) does not: on an ideal staircase its line is the true line moved half a texel
@@ -90,7 +90,7 @@ TEST_F(RevectorizationScene, AgainstShadowVolumesOnTheBundledScenes) {
       }
       EXPECT_LE(improved.m.overestimationPct, conservative.m.overestimationPct);
       // Near the boundary, where the two functions differ, improved overestimates strictly
-      // less (seed 004's claim); conservative overestimates more than sm's stair there.
+      // less (EDTSM*'s claim); conservative overestimates more than sm's stair there.
       EXPECT_LT(improved.overestimationNearPct, conservative.overestimationNearPct);
       EXPECT_GT(conservative.overestimationNearPct, sm.overestimationNearPct);
       // Conservative SMSR only adds shadow: it cannot leak where sm does not.

@@ -23,8 +23,8 @@ std::vector<ParameterSpec> commonParameters() {
 
 ParameterSpec visibilityParameter() {
   return ParameterSpec::choice("visibility", "conservative", {"conservative", "improved"},
-                               "conservative: lit side only, GI 2016 / seed 004 eq. 4; "
-                               "improved: both sides, seed 004 eq. 7");
+                               "conservative: lit side only, GI 2016 / EDTSM* eq. 4; "
+                               "improved: both sides, EDTSM* eq. 7");
 }
 
 ParameterSpec kernelParameter() {
@@ -104,19 +104,23 @@ std::vector<std::pair<std::string, ImageF>> Common::debugImages() const {
   return {};
 }
 
-void SinglePassTechnique::configureOwn(const ParameterSet& parameters) {
+void SinglePassTechnique::configure(const ParameterSet& parameters) {
+  shadowMap_.configure(parameters);
   common_.configure(parameters);
   configureTechnique(parameters);
 }
 
-void SinglePassTechnique::setUniforms(const Program& program) const {
-  common_.setLibraryUniforms(program);
-  setTechniqueUniforms(program);
-}
-
-// Untimed: the debug view never changes the timed pass.
-void SinglePassTechnique::afterTimedPasses(const FrameInputs& in, const Texture& shadowMap) {
-  common_.renderDebug(in, shadowMap, bothSides_);
+void SinglePassTechnique::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
+  shadowMap_.render(in, timer);
+  const auto bind = [&](const Program& program) {
+    bindReceiverInputs(program, in);
+    common_.bindLibrary(program, shadowMap_.depth());
+    setTechniqueUniforms(program);
+  };
+  screen_.setDefines(shaderDefines());
+  screen_.draw(in, out, timer, bind, "classify", "revectorize");
+  // Untimed: the debug view never changes the timed passes.
+  common_.renderDebug(in, shadowMap_.depth(), bothSides_);
 }
 
 }  // namespace testbed::revectorization

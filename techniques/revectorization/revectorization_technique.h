@@ -6,16 +6,16 @@
 #include <utility>
 #include <vector>
 
+#include "techniques/revectorization/edge_split_pass.h"
 #include "testbed/render/screen_pass.h"
 #include "testbed/render/shadow_map_pass.h"
-#include "testbed/render/shadow_map_screen_technique.h"
 #include "testbed/technique/technique.h"
 
 namespace testbed::revectorization {
 
 // max_search, epsilon, bias, debug (the family's common parameters).
 std::vector<ParameterSpec> commonParameters();
-// `visibility` of smsr and rpcf-smsr: conservative (seed 004 eq. 4) or improved (eq. 7).
+// `visibility` of smsr and rpcf-smsr: conservative (EDTSM* eq. 4) or improved (eq. 7).
 ParameterSpec visibilityParameter();
 // `kernel` of the RPCF variants.
 ParameterSpec kernelParameter();
@@ -53,24 +53,27 @@ class Common {
   ImageF debugImage_;
 };
 
-// A technique made of the shared shadow map and one screen pass, timed "revectorize".
-class SinglePassTechnique : public ShadowMapScreenTechnique {
+// A technique made of the shared shadow map and one screen pass (edge_split_pass.h),
+// timed "classify" (every pixel) and "revectorize" (the edge pixels).
+class SinglePassTechnique : public ShadowTechnique {
  public:
+  void configure(const ParameterSet& parameters) final;
+  void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) final;
   std::vector<std::pair<std::string, ImageF>> debugImages() const override { return common_.debugImages(); }
 
  protected:
   // `fragmentKey`: the technique's shader; `bothSides`: whether exiting discontinuities
   // take part (debug view only; the shader decides for itself).
-  SinglePassTechnique(std::string fragmentKey, bool bothSides)
-      : ShadowMapScreenTechnique(std::move(fragmentKey), "revectorize"), bothSides_(bothSides) {}
+  SinglePassTechnique(std::string fragmentKey, bool bothSides) : bothSides_(bothSides), screen_(std::move(fragmentKey)) {}
   virtual void configureTechnique(const ParameterSet& parameters) = 0;
   virtual void setTechniqueUniforms(const Program& program) const = 0;
+  // Compile-time settings of the screen pass's shaders.
+  virtual std::string shaderDefines() const { return {}; }
   bool bothSides_;
 
  private:
-  void configureOwn(const ParameterSet& parameters) final;
-  void setUniforms(const Program& program) const final;
-  void afterTimedPasses(const FrameInputs& in, const Texture& shadowMap) final;
+  ShadowMapPass shadowMap_;
+  EdgeSplitPass screen_;
   Common common_;
 };
 

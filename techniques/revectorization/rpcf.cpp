@@ -1,6 +1,8 @@
 // `rpcf-smsr` and `rpcf-rsmss`: revectorization-based percentage-closer filtering
 // (Macedo & Apolinário, GI 2016 §3.4, eqs. 2 and 3): a k×k box over texels whose every
 // sample is revectorized by SMSR or RSMSS; see rpcf_smsr.glsl and rpcf_rsmss.glsl.
+#include <string>
+
 #include "techniques/revectorization/revectorization_technique.h"
 #include "testbed/technique/registry.h"
 
@@ -8,6 +10,9 @@ namespace testbed::revectorization {
 namespace {
 
 const char* kCitation = "Macedo, Apolinário, Revectorization-Based Shadow Mapping, GI 2016";
+
+// The kernel compiled into the screen pass (rpcf.glsl), so its tap loops unroll.
+std::string kernelDefine(int kernel) { return "#define RPCF_KERNEL " + std::to_string(kernel) + "\n"; }
 
 class RpcfSmsr final : public SinglePassTechnique {
  public:
@@ -34,10 +39,8 @@ class RpcfSmsr final : public SinglePassTechnique {
     improved_ = parameters.getChoice("visibility") == "improved";
     bothSides_ = improved_;
   }
-  void setTechniqueUniforms(const Program& program) const override {
-    program.set("uKernel", kernel_);
-    program.set("uImproved", improved_ ? 1 : 0);
-  }
+  void setTechniqueUniforms(const Program& program) const override { program.set("uImproved", improved_ ? 1 : 0); }
+  std::string shaderDefines() const override { return kernelDefine(kernel_); }
   int kernel_ = 3;
   bool improved_ = false;
 };
@@ -63,7 +66,8 @@ class RpcfRsmss final : public SinglePassTechnique {
 
  private:
   void configureTechnique(const ParameterSet& parameters) override { kernel_ = static_cast<int>(parameters.getInt("kernel")); }
-  void setTechniqueUniforms(const Program& program) const override { program.set("uKernel", kernel_); }
+  void setTechniqueUniforms(const Program&) const override {}
+  std::string shaderDefines() const override { return kernelDefine(kernel_); }
   int kernel_ = 3;
 };
 

@@ -4,6 +4,8 @@
 #include "techniques/revectorization/rsmss.glsl"
 #include "techniques/revectorization/rpcf.glsl"
 
+bool rpcfRsmssClassify(vec2 uv, float depth, out float v) { return rpcfClassify(uv, depth, true, v); }
+
 float rpcfRsmssVisibility(vec2 uv, float depth) {
   int h = uKernel / 2;
   vec2 texel = 1.0 / vec2(uShadowMapSize);
@@ -11,4 +13,11 @@ float rpcfRsmssVisibility(vec2 uv, float depth) {
   for (int y = -h; y <= h; ++y)
     for (int x = -h; x <= h; ++x) sum += rsmssVisibility(uv + vec2(x, y) * texel, depth);
   return sum / float(uKernel * uKernel);
+}
+
+// The same number as rpcfRsmssVisibility, computing only the edge taps (rpcfNextEdgeTap).
+float rpcfRsmssEdgeVisibility(vec2 uv, float depth) {
+  RpcfTaps taps = rpcfBeginTaps(uv, depth, true);
+  while (rpcfNextEdgeTap(taps)) taps.sum += rsmssVisibility(taps.tapUv, depth);
+  return rpcfEndTaps(taps);
 }

@@ -1,19 +1,12 @@
 #version 450 core
-// Screen pass of `rpcf-smsr`: the receiver from the G-buffer, its light-space sample, and
-// the visibility function of rpcf_smsr.glsl.
+// Screen pass of `rpcf-smsr`: the visibility function of rpcf_smsr.glsl, drawn by
+// revectorization_screen.glsl (a classifying draw, then the edge pixels).
 #include "testbed/glsl/receiver.glsl"
 #include "techniques/revectorization/rpcf_smsr.glsl"
 
-layout(location = 0) out float outVisibility;
-
-void main() {
-  Receiver r;
-  if (!loadReceiver(ivec2(gl_FragCoord.xy), r)) discard;
-  // Facing away: shadowed, and no part of the discontinuity computation (GI 2016 §3.2).
-  if (facesAwayFromLight(r)) {
-    outVisibility = 0.0;
-    return;
-  }
-  vec3 light = lightSpace(r.position);
-  outVisibility = rpcfSmsrVisibility(light.xy, light.z);
+float rvScreenVisibility(ivec2 pixel, Receiver r, vec3 light) { return rpcfSmsrEdgeVisibility(light.xy, light.z); }
+bool rvScreenClassify(ivec2 pixel, Receiver r, vec3 light, out float v) {
+  return rpcfSmsrClassify(light.xy, light.z, v);
 }
+
+#include "techniques/revectorization/revectorization_screen.glsl"

@@ -5,6 +5,8 @@
 #include "techniques/revectorization/smsr.glsl"
 #include "techniques/revectorization/rpcf.glsl"
 
+bool rpcfSmsrClassify(vec2 uv, float depth, out float v) { return rpcfClassify(uv, depth, uImproved == 1, v); }
+
 float rpcfSmsrVisibility(vec2 uv, float depth) {
   int h = uKernel / 2;
   vec2 texel = 1.0 / vec2(uShadowMapSize);
@@ -12,4 +14,11 @@ float rpcfSmsrVisibility(vec2 uv, float depth) {
   for (int y = -h; y <= h; ++y)
     for (int x = -h; x <= h; ++x) sum += smsrVisibility(uv + vec2(x, y) * texel, depth);
   return sum / float(uKernel * uKernel);
+}
+
+// The same number as rpcfSmsrVisibility, computing only the edge taps (rpcfNextEdgeTap).
+float rpcfSmsrEdgeVisibility(vec2 uv, float depth) {
+  RpcfTaps taps = rpcfBeginTaps(uv, depth, uImproved == 1);
+  while (rpcfNextEdgeTap(taps)) taps.sum += smsrVisibility(taps.tapUv, depth);
+  return rpcfEndTaps(taps);
 }

@@ -1,19 +1,12 @@
 #version 450 core
-// Screen pass of `rsmss`: the receiver from the G-buffer, its light-space sample, and
-// the visibility function of rsmss.glsl.
+// Screen pass of `rsmss`: the visibility function of rsmss.glsl, drawn by
+// revectorization_screen.glsl (a classifying draw, then the edge pixels).
 #include "testbed/glsl/receiver.glsl"
 #include "techniques/revectorization/rsmss.glsl"
 
-layout(location = 0) out float outVisibility;
-
-void main() {
-  Receiver r;
-  if (!loadReceiver(ivec2(gl_FragCoord.xy), r)) discard;
-  // Facing away: shadowed, and no part of the discontinuity computation (GI 2016 §3.2).
-  if (facesAwayFromLight(r)) {
-    outVisibility = 0.0;
-    return;
-  }
-  vec3 light = lightSpace(r.position);
-  outVisibility = rsmssVisibility(light.xy, light.z);
+float rvScreenVisibility(ivec2 pixel, Receiver r, vec3 light) { return rsmssVisibility(light.xy, light.z); }
+bool rvScreenClassify(ivec2 pixel, Receiver r, vec3 light, out float v) {
+  return rsmssClassify(light.xy, light.z, v);
 }
+
+#include "techniques/revectorization/revectorization_screen.glsl"

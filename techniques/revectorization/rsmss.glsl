@@ -7,7 +7,7 @@
 // The paper's own 31 comparisons are in its missing supplementary material; our signs:
 // r = +α for an L-shaped axis (one end found), r = −tent for a U-shaped axis (both ends),
 // r = 0 for a straight run (no end). So straight runs keep s, an L corner ramps from the
-// corner (its 0.5 contour is the improved SMSR line, seed 004 eq. 7), an axis that is a
+// corner (its 0.5 contour is the improved SMSR line, EDTSM* eq. 7), an axis that is a
 // U next to an L ramps along the L axis only, and a texel that is a U in both axes (an
 // isolated texel) takes the other side's value. On the edge between a lit and a shadowed
 // run of an ideal staircase the two sides give the same value, so the result is
@@ -17,6 +17,13 @@
 float rsmssSigned(RvAxis a) {
   if (a.kind == RV_NO_END) return 0.0;
   return a.kind == RV_U ? -max(a.alpha, 1e-6) : max(a.alpha, 1e-6);
+}
+
+// True, with the visibility v, where the sample's texel is no edge (v = s then).
+bool rsmssClassify(vec2 uv, float depth, out float v) {
+  RvSample r = rvClassify(uv, depth, true);
+  v = r.s;
+  return !r.edge;
 }
 
 // Visibility in [0,1] of the light-space sample (uv, light depth).

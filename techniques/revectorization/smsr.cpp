@@ -1,7 +1,7 @@
 // `smsr`: single-pass shadow map silhouette revectorization (Macedo & Apolinário, GI 2016
 // §3.2). One screen pass finds the lit texels next to shadow, measures their edge in
 // light space and clips the oriented normalized discontinuity space with the conservative
-// (seed 004 eq. 4) or improved (seed 004 eq. 7) visibility function; see smsr.glsl.
+// (EDTSM* eq. 4) or improved (EDTSM* eq. 7) visibility function; see smsr.glsl.
 #include "techniques/revectorization/revectorization_technique.h"
 #include "testbed/technique/registry.h"
 

@@ -1,10 +1,10 @@
 // Single-pass SMSR visibility (GI 2016 §3.2) in two variants:
-// - conservative (uImproved = 0; seed 004 eq. 4): only lit texels next to shadow
+// - conservative (uImproved = 0; EDTSM* eq. 4): only lit texels next to shadow
 //   (entering discontinuities) are traversed; a lit sample of an L-shaped step becomes
 //   shadow iff 1 − α_x > α_y.
-// - improved (uImproved = 1; seed 004 eq. 7): both sides are traversed and
+// - improved (uImproved = 1; EDTSM* eq. 7): both sides are traversed and
 //   v = 0 iff (1 − s) + (2s − 1)(α_x + α_y) < 0.5.
-// α_x, α_y are the normalized distances to the horizontal and vertical ends (seed 004
+// α_x, α_y are the normalized distances to the horizontal and vertical ends (EDTSM*
 // §3.1), from the traversals along the map's x and y axes. For a texel next to a straight
 // stretch of an edge, the traversal across the edge ends at once (L = 1) and its α is the
 // sample's sub-texel distance from the edge; along the edge it is the position in the run.
@@ -21,16 +21,23 @@
 
 uniform int uImproved;
 
-// seed 004 eq. 4 (GI 2016 SMSR): lit side only.
+// EDTSM* eq. 4 (GI 2016 SMSR): lit side only.
 float smsrConservative(RvSample r) {
   if (r.x.kind == RV_U || r.y.kind == RV_U) return 0.0;
   if (r.x.kind == RV_NO_END || r.y.kind == RV_NO_END) return 1.0;
   return 1.0 - r.x.alpha > r.y.alpha ? 0.0 : 1.0;
 }
 
-// seed 004 eq. 7: both sides.
+// EDTSM* eq. 7: both sides.
 float smsrImproved(RvSample r) {
   return (1.0 - r.s) + (2.0 * r.s - 1.0) * (r.x.alpha + r.y.alpha) < 0.5 ? 0.0 : 1.0;
+}
+
+// True, with the visibility v, where the sample's texel is no edge (v = s then).
+bool smsrClassify(vec2 uv, float depth, out float v) {
+  RvSample r = rvClassify(uv, depth, uImproved == 1);
+  v = r.s;
+  return !r.edge;
 }
 
 // Visibility of the light-space sample (uv, light depth): 1 lit, 0 shadow.

@@ -1,12 +1,17 @@
 // `smsr-2pass`: Bondarev's original two-pass shadow map silhouette revectorization
-// (I3D 2014 poster; seed 001): pass 1 writes the compressed discontinuity of every pixel
-// into a screen-size RGBA8 discontinuity map, pass 2 searches that map in screen space for
-// the edge's ends and clips the ONDS (entering discontinuities only). As in Bondarev's
-// listing, pass 1 is a screen pass over a buffer of world positions (our G-buffer), not a
-// second scene pass; the map's memory is booked by the GL wrappers. Its debug views are
+// (I3D 2014 poster): pass 1 writes the compressed discontinuity of every pixel into a
+// screen-size RGBA8 discontinuity map, pass 2 searches that map in screen space for the
+// edge's ends and clips the ONDS (entering discontinuities only). Pass 1 renders the scene
+// a second time from the camera, which is the cost GI 2016 (Macedo & Apolinário, §5,
+// table 4) measures growing with the polygon count against single-pass SMSR; it is depth
+// tested for equality against the G-buffer's depth, so each pixel's visible surface
+// writes once and the positions are the G-buffer's own. Pass 2 is drawn as the family's
+// screen pass (edge_split_pass.h). The maps' memory is booked by the GL wrappers. Its debug views are
 // its own: debug=discontinuity writes the screen-space map pass 2 searches (rg = d_c,
 // b = 1 − s), debug=onds what that search measured.
 #include "techniques/revectorization/revectorization_technique.h"
+#include "testbed/render/gbuffer_pass.h"
+#include "testbed/render/gpu_scene.h"
 #include "testbed/render/receiver_inputs.h"
 #include "testbed/technique/registry.h"
 
@@ -37,17 +42,20 @@ class SmsrTwoPass final : public ShadowTechnique {
 
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {
     if (!discProgram_) {
-      discProgram_ = Program::graphics("testbed/render/fullscreen.vert",
+      discProgram_ = Program::graphics("testbed/render/gbuffer.vert",
                                        "techniques/revectorization/smsr_2pass_discontinuity.frag");
-      revectorizeProgram_ = Program::graphics("testbed/render/fullscreen.vert",
-                                              "techniques/revectorization/smsr_2pass_revectorize.frag");
     }
     if (!discMap_ || discMap_.width() != in.size.x || discMap_.height() != in.size.y) {
       discMap_ = Texture::create2D(GL_RGBA8, in.size.x, in.size.y);
       discMap_.setFilter(GL_NEAREST, GL_NEAREST);
       discTarget_ = Framebuffer::create();
       discTarget_.attachColor(0, discMap_);
+      discTargetDepth_ = 0;
+    }
+    if (discTargetDepth_ != in.gbuffer.depth().id()) {  // the G-buffer's depth, read only
+      discTarget_.attachDepth(in.gbuffer.depth());
       discTarget_.finish({0});
+      discTargetDepth_ = in.gbuffer.depth().id();
     }
     shadowMap_.render(in, timer);
     {
@@ -56,14 +64,13 @@ class SmsrTwoPass final : public ShadowTechnique {
       glClearNamedFramebufferfv(discTarget_.id(), GL_COLOR, 0, clear);
       bindReceiverInputs(discProgram_, in);
       common_.bindLibrary(discProgram_, shadowMap_.depth());
-      screen_.draw(discProgram_, discTarget_, in.size);
+      drawSceneAgain(in);
     }
-    {
-      auto scope = timer.scope("revectorize");
-      bindSearchInputs(revectorizeProgram_, in);
-      revectorizeProgram_.set("uImproved", 0);
-      screen_.draw(revectorizeProgram_, out.framebuffer, in.size);
-    }
+    const auto bindSearch = [&](const Program& program) {
+      bindSearchInputs(program, in);
+      program.set("uImproved", 0);
+    };
+    revectorize_.draw(in, out, timer, bindSearch, "classify", "revectorize");
     renderDebug(in);  // untimed
   }
 
@@ -76,6 +83,25 @@ class SmsrTwoPass final : public ShadowTechnique {
     common_.bindLibrary(program, shadowMap_.depth());
     glBindTextureUnit(3, discMap_.id());
     program.set("uDiscontinuityMap", 3);
+  }
+
+  // The scene from the camera, as the G-buffer pass draws it (its vertex shader and state),
+  // where its depth equals the G-buffer's.
+  void drawSceneAgain(const FrameInputs& in) const {
+    glBindFramebuffer(GL_FRAMEBUFFER, discTarget_.id());
+    glViewport(0, 0, in.size.x, in.size.y);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_EQUAL);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_BLEND);
+    discProgram_.use();
+    discProgram_.set("uViewProjection", in.camera.viewProjection());
+    in.geometry.draw();
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_DEPTH_TEST);
   }
 
   void renderDebug(const FrameInputs& in) {
@@ -94,10 +120,11 @@ class SmsrTwoPass final : public ShadowTechnique {
 
   Common common_;
   ShadowMapPass shadowMap_;
-  ScreenPass screen_;
-  Program discProgram_, revectorizeProgram_, ondsProgram_;
+  EdgeSplitPass revectorize_{"techniques/revectorization/smsr_2pass_revectorize.frag"};
+  Program discProgram_, ondsProgram_;
   Texture discMap_;
   Framebuffer discTarget_;
+  GLuint discTargetDepth_ = 0;
 };
 
 }  // namespace

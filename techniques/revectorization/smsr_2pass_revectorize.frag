@@ -1,21 +1,22 @@
 #version 450 core
 // smsr-2pass, pass 2 and merge (Bondarev 2014): the screen-space search of
 // smsr_2pass_search.glsl, then single-pass SMSR's conservative clipping of the ONDS
-// (smsr.glsl, seed 004 eq. 4): Bondarev's own clipping function is not given in full
-// (GI 2016 §4.1 says so), and the conservative one is its single-pass successor.
+// (smsr.glsl, EDTSM* eq. 4): Bondarev's own clipping function is not given in full
+// (GI 2016 §4.1 says so), and the conservative one is its single-pass successor. Drawn as
+// the family's screen pass (revectorization_screen.glsl): pixels without an entering
+// discontinuity in pass 1's map keep their shadow test, the others are searched.
 #include "techniques/revectorization/smsr_2pass_search.glsl"
 #include "techniques/revectorization/smsr.glsl"
 
-layout(location = 0) out float outVisibility;
-
-void main() {
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
-  Receiver r;
-  if (!loadReceiver(pixel, r)) discard;
-  if (facesAwayFromLight(r)) {
-    outVisibility = 0.0;
-    return;
-  }
+float rvScreenVisibility(ivec2 pixel, Receiver r, vec3 light) {
   RvSample s = twoPassSample(pixel, r);
-  outVisibility = s.edge ? smsrConservative(s) : s.s;
+  return s.edge ? smsrConservative(s) : s.s;
 }
+
+bool rvScreenClassify(ivec2 pixel, Receiver r, vec3 light, out float v) {
+  vec4 disc = texelFetch(uDiscontinuityMap, pixel, 0);
+  v = 1.0 - disc.b;
+  return twoPassNoEdge(disc);
+}
+
+#include "techniques/revectorization/revectorization_screen.glsl"

@@ -38,6 +38,10 @@ vec2 lightUvAt(ivec2 q, vec2 fallback) {
   return position.w > 0.5 ? lightSpace(position.xyz).xy : fallback;
 }
 
+// Pass 1 wrote no entering discontinuity here (shadowed, or lit without one): the
+// visibility is the shadow test, 1 − b.
+bool twoPassNoEdge(vec4 disc) { return disc.b > 0.5 || disc.rg == vec2(0.0); }
+
 // The pixel's sample for the clipping: `s.edge` false means no revectorization, and then
 // s.s is the visibility (the shadow test, or lit where no stair can be seen).
 RvSample twoPassSample(ivec2 pixel, Receiver r) {
@@ -48,7 +52,7 @@ RvSample twoPassSample(ivec2 pixel, Receiver r) {
   s.y = RvAxis(1.0, RV_NO_END);
   vec4 disc = texelFetch(uDiscontinuityMap, pixel, 0);
   s.s = 1.0 - disc.b;
-  if (disc.b > 0.5 || disc.rg == vec2(0.0)) return s;
+  if (twoPassNoEdge(disc)) return s;
   // d(light texel)/d(pixel), one-sided differences; a neighbour off the receivers falls
   // back to the other side.
   vec2 texels = vec2(uShadowMapSize);

@@ -25,7 +25,7 @@ TEST(SmsrTwoPass, PassesMemoryAndErrorAgainstSinglePass) {
     const ImageF truth = test::groundTruthVisibility(runner);
     auto run = [&](const std::string& id) { return test::runTechnique(runner, id); };
     const TechniqueRun sm = run("sm"), single = run("smsr"), two = run("smsr-2pass");
-    EXPECT_EQ(two.times.order, (std::vector<std::string>{"shadow-map", "discontinuity", "revectorize"}));
+    EXPECT_EQ(two.times.order, (std::vector<std::string>{"shadow-map", "discontinuity", "classify", "revectorize"}));
     EXPECT_EQ(two.memoryBytes, single.memoryBytes + 640u * 360u * 4u);
     const ErrorMetrics msm = computeErrorMetrics(sm.visibility, truth);
     const ErrorMetrics m1 = computeErrorMetrics(single.visibility, truth);

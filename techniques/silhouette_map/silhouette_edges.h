@@ -1,5 +1,5 @@
 #pragma once
-// Object-space silhouette extraction (seed 003, "Create silhouette map"): the edges whose
+// Object-space silhouette extraction (Chan's notes, "Create silhouette map"): the edges whose
 // two faces face the light differently, plus the mesh boundary edges of non-degenerate
 // faces (open meshes: planes, holes). The facing rule is the ground truth's
 // (groundtruth/volume_geometry.cpp): a face faces the light when dot(normal, towards

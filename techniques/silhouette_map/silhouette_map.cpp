@@ -1,14 +1,15 @@
 // `silhouette-map`: shadow silhouette maps (Sen, Cammarano & Hanrahan 2003; Chan's course
-// notes, seed 003). Three timed passes: the shared depth map ("shadow-map"), the
-// silhouette map ("silhouette-map": CPU silhouette extraction, upload, conservative edge
-// rasterization) and the final screen pass ("visibility").
+// notes). Four timed passes: the shared depth map ("shadow-map"), the silhouette map
+// ("silhouette-map": CPU silhouette extraction, upload, conservative edge rasterization)
+// and the final screen pass, drawn edge-split ("visibility" for every pixel, then
+// "silhouette-pixels" where the corner tests disagree).
 #include <array>
 #include <vector>
 
 #include "groundtruth/volume_geometry.h"
+#include "techniques/revectorization/edge_split_pass.h"
 #include "techniques/silhouette_map/silhouette_edges.h"
 #include "testbed/render/receiver_inputs.h"
-#include "testbed/render/screen_pass.h"
 #include "testbed/render/shadow_map_pass.h"
 #include "testbed/technique/registry.h"
 #include "testbed/technique/technique.h"
@@ -52,15 +53,14 @@ class SilhouetteMap final : public ShadowTechnique {
       auto scope = timer.scope("silhouette-map");
       renderSilhouetteMap(in);
     }
-    {
-      auto scope = timer.scope("visibility");
-      bindReceiverInputs(visibilityProgram_, in);
-      bindShadowMap(visibilityProgram_, shadowMap_.depth());
+    const auto bind = [&](const Program& program) {
+      bindReceiverInputs(program, in);
+      bindShadowMap(program, shadowMap_.depth());
       glBindTextureUnit(3, silhouettes_.id());
-      visibilityProgram_.set("uSilhouetteMap", 3);
-      visibilityProgram_.set("uBias", bias_);
-      screen_.draw(visibilityProgram_, out.framebuffer, in.size);
-    }
+      program.set("uSilhouetteMap", 3);
+      program.set("uBias", bias_);
+    };
+    visibility_.draw(in, out, timer, bind, "visibility", "silhouette-pixels");
   }
 
  private:
@@ -69,8 +69,6 @@ class SilhouetteMap final : public ShadowTechnique {
     if (!edgeProgram_) {
       edgeProgram_ = Program::graphics("techniques/silhouette_map/silhouette_map_edges.vert",
                                        "techniques/silhouette_map/silhouette_map_points.frag");
-      visibilityProgram_ =
-          Program::graphics("testbed/render/fullscreen.vert", "techniques/silhouette_map/silhouette_map_visibility.frag");
       emptyVertexArray_ = VertexArray::create();
     }
     const int side = in.shadowMapSize + 1;  // one more than the depth map: see silhouette_map.glsl
@@ -119,8 +117,8 @@ class SilhouetteMap final : public ShadowTechnique {
 
   float bias_ = 0.0f, occlusionBias_ = 0.001f;
   ShadowMapPass shadowMap_;
-  ScreenPass screen_;
-  Program edgeProgram_, visibilityProgram_;
+  revectorization::EdgeSplitPass visibility_{"techniques/silhouette_map/silhouette_map_visibility.frag"};
+  Program edgeProgram_;
   VertexArray emptyVertexArray_;
   Texture silhouettes_;
   Framebuffer framebuffer_;

@@ -1,4 +1,4 @@
-// Shadow silhouette maps (Sen et al. 2003; seed 003), the two per-texel rules.
+// Shadow silhouette maps (Sen et al. 2003; Chan's notes), the two per-texel rules.
 //
 // Coordinates: w = shadow-map uv · N + 0.5 ("silhouette space"). Silhouette texel p covers
 // [p, p + 1]², so its corners sit on the depth samples (depth texel k's centre is at

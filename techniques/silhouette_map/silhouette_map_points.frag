@@ -1,5 +1,5 @@
 #version 450 core
-// One silhouette point per texel (seed 003): pick it by the diagonal rules, drop edges
+// One silhouette point per texel (Chan's notes): pick it by the diagonal rules, drop edges
 // the light does not see (behind all four corner depth samples), write the point as an
 // offset in [0,1]² of the texel. Later edges overwrite earlier ones, as in the paper.
 #include "testbed/glsl/shadow_test.glsl"

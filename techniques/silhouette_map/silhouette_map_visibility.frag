@@ -1,14 +1,15 @@
 #version 450 core
-// The final pass (seed 003): the four depth tests at the corners of the receiver's
-// silhouette texel; where they agree (non-silhouette pixel) they are the answer, else the
-// skewed quadrant of the five silhouette points picks the corner whose test decides.
+// The final pass (Sen, Cammarano & Hanrahan 2003, §3): the four depth tests at the corners
+// of the receiver's silhouette texel; where they agree (non-silhouette pixel) they are the
+// answer, else the skewed quadrant of the five silhouette points picks the corner whose
+// test decides. Drawn edge-split (revectorization_screen.glsl): a draw of every pixel
+// answers where the corners agree, the silhouette pixels alone read the silhouette map.
 #include "testbed/glsl/receiver.glsl"
 #include "testbed/glsl/shadow_test.glsl"
 #include "techniques/silhouette_map/silhouette_map.glsl"
 
 uniform sampler2D uSilhouetteMap;  // RG: the point's offset in its texel, (N + 1)²
 uniform float uBias;
-layout(location = 0) out float outVisibility;
 
 // A texel's point in the coordinates of the texel `offset` away from it; the centre for
 // texels outside the map (no silhouette there).
@@ -19,24 +20,35 @@ vec2 pointAt(ivec2 texel, ivec2 offset) {
   return local + vec2(offset);
 }
 
-void main() {
-  Receiver r;
-  if (!loadReceiver(ivec2(gl_FragCoord.xy), r)) discard;
-  vec3 light = lightSpace(r.position);
-  // Outside the light's frustum: shadow (glsl/receiver.glsl's convention).
-  if (facesAwayFromLight(r) || !insideLightFrustum(light)) {
-    outVisibility = 0.0;
-    return;
-  }
-  vec2 w = light.xy * vec2(uShadowMapSize) + 0.5;
-  ivec2 texel = ivec2(floor(w));
-  float s[4];
+// The four depth tests at the corners of the receiver's silhouette texel. True where they
+// decide alone: outside the light's frustum on any side (shadow, v = 0: the convention of
+// testbed/glsl/receiver.glsl) or where they agree (v = that test).
+bool cornerTests(vec3 light, out float s[4], out ivec2 texel, out vec2 w, out float v) {
+  v = 0.0;
+  w = light.xy * vec2(uShadowMapSize) + 0.5;
+  texel = ivec2(floor(w));
+  for (int c = 0; c < 4; ++c) s[c] = 0.0;
+  if (!insideLightFrustum(light)) return true;
   for (int c = 0; c < 4; ++c) s[c] = shadowTestTexel(texel - 1 + ivec2(c & 1, c >> 1), light.z, uBias);
-  if (s[0] == s[1] && s[0] == s[2] && s[0] == s[3]) {
-    outVisibility = s[0];
-    return;
-  }
+  v = s[0];
+  return s[0] == s[1] && s[0] == s[2] && s[0] == s[3];
+}
+
+bool rvScreenClassify(ivec2 pixel, Receiver r, vec3 light, out float v) {
+  float s[4];
+  ivec2 texel;
+  vec2 w;
+  return cornerTests(light, s, texel, w, v);
+}
+
+float rvScreenVisibility(ivec2 pixel, Receiver r, vec3 light) {
+  float s[4], v;
+  ivec2 texel;
+  vec2 w;
+  if (cornerTests(light, s, texel, w, v)) return v;
   int corner = quadrantCorner(pointAt(texel, ivec2(0)), pointAt(texel, ivec2(1, 0)), pointAt(texel, ivec2(0, 1)),
                               pointAt(texel, ivec2(-1, 0)), pointAt(texel, ivec2(0, -1)), w - vec2(texel));
-  outVisibility = s[corner];
+  return s[corner];
 }
+
+#include "techniques/revectorization/revectorization_screen.glsl"

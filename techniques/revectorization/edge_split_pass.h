@@ -1,0 +1,42 @@
+#pragma once
+// The revectorization screen pass drawn in two steps (revectorization_screen.glsl): a
+// cheap draw of every pixel that answers the shadow test where no edge texel is involved
+// and marks the rest in a depth buffer, then the full visibility on the marked pixels
+// only. The early depth test drops unmarked pixels before their shader runs, which is
+// what an early-out costs on any rasterizer, including one (llvmpipe) whose branches run
+// every side for all lanes. Output is the same as one full draw, pixel for pixel.
+#include <functional>
+#include <string>
+
+#include "testbed/gl/objects.h"
+#include "testbed/gl/pass_timer.h"
+#include "testbed/technique/technique.h"
+
+namespace testbed::revectorization {
+
+class EdgeSplitPass {
+ public:
+  // `fragmentKey`: a shader ending in revectorization_screen.glsl.
+  explicit EdgeSplitPass(std::string fragmentKey) : fragmentKey_(std::move(fragmentKey)) {}
+
+  // Prepended to both programs' sources (after #version); a change rebuilds them.
+  void setDefines(const std::string& defines);
+  // `bind` sets each program's uniforms and textures. Timed as `classifyPass`, then
+  // `edgePass`.
+  void draw(const FrameInputs& in, const VisibilityTarget& out, PassTimer& timer,
+            const std::function<void(const Program&)>& bind, const std::string& classifyPass,
+            const std::string& edgePass);
+
+ private:
+  void prepare(const VisibilityTarget& out);
+  void drawScreen(const Program& program, glm::ivec2 size) const;
+
+  std::string fragmentKey_, defines_;
+  Program classify_, edges_;
+  Texture marks_;  // depth 0: edge pixel, 1: answered by the classifying draw
+  Framebuffer target_;
+  GLuint targetTexture_ = 0;
+  VertexArray empty_;
+};
+
+}  // namespace testbed::revectorization
