@@ -44,8 +44,9 @@ done
 { echo "## Debug views"; echo
   echo '[debug/](debug/): `testbed render --scene scenes/bunny.json --technique T --set debug=discontinuity|onds --shadow-map 256`'
   echo "for smsr, smsr-2pass (its own screen-space map and search; b = 1 on every shadowed receiver) and rsmss: the compressed discontinuity (r, g: directions, b: entering/exiting) and the ONDS."; echo; } >> "$index"
-rm -rf "$repo/results"
+# results/paper/ belongs to scripts/paper.sh: everything else here is this script's.
 mkdir -p "$repo/results"
+find "$repo/results" -mindepth 1 -maxdepth 1 ! -name paper -exec rm -rf {} +
 for dir in "$work"/*-[0-9]*/; do cp -r "$dir/keep" "$repo/results/$(basename "$dir")"; done
 cp -r "$work/debug" "$repo/results/debug"
 cp "$index" "$repo/results/README.md"
