@@ -370,7 +370,7 @@ Agreement compare(const Scene& scene, glm::ivec2 size) {
 class RayCastAgreement : public ::testing::Test {
  protected:
   void SetUp() override { test::sharedContext(); }
-  // DESIGN.md: the two ground truths agree on ≥ 99.9% of receiver pixels.
+  // The contract: the two ground truths agree on ≥ 99.9% of receiver pixels.
   static void expectAgreement(const Scene& scene, glm::ivec2 size = {640, 360}) {
     const Agreement a = compare(scene, size);
     EXPECT_GT(a.receivers, size.x * size.y / 10);

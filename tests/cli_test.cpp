@@ -103,7 +103,7 @@ TEST(CliRender, BundledSceneWritesExactlyTheThreeOutputsAndARecord) {
 
   const json record = expectRenderOutputs(out, "sm");
   ASSERT_TRUE(record.is_object());
-  // The DESIGN.md "Record" fields.
+  // The README's "Record" fields.
   EXPECT_EQ(record.value("technique", ""), "sm");
   EXPECT_EQ(record.value("scene", ""), "wall");  // the scene's "name"
   EXPECT_EQ(record.value("size", json()), json::array({160, 90}));

@@ -1,6 +1,6 @@
 // RSMSS visibility (GI 2016 §3.3): entering and exiting discontinuities are both
 // traversed and the ONDS is turned into a continuous value, a 1-D smoothing filter along
-// the edge. With signed normalized distances r_x, r_y (TECHNIQUES.md):
+// the edge. With signed normalized distances r_x, r_y (GI 2016 §3.3, our reading):
 //   r_x·r_y < 0  → (1 − s) + (2s − 1)·max(r)
 //   r_x·r_y = 0  → s
 //   otherwise    → clamp((1 − s) + (2s − 1)(r_x + r_y), 0, 1)

@@ -10,7 +10,7 @@
 // sample's sub-texel distance from the edge; along the edge it is the position in the run.
 //
 // The 12 configurations of v_SMSR are in the paper's supplementary material, which we do
-// not have. Our reading, from the paper's text and TECHNIQUES.md:
+// not have. Our reading, from the paper's text (§3.2) and EDTSM* §3.1:
 // - a straight run (no end found along an axis, e.g. longer than 2·max_search) keeps the
 //   shadow test's answer (α = 1 on that axis makes both equations answer s);
 // - conservative: a U-shape (both ends found, which includes opposite umbra neighbours)

@@ -1,5 +1,5 @@
 #pragma once
-// Error metrics of a technique's visibility image against the ground truth (DESIGN.md,
+// Error metrics of a technique's visibility image against the ground truth (README,
 // "Error metrics"), their JSON `error` block, and an error heat map for people.
 //
 // Inputs are one-channel ImageF visibility images (1 = lit, 0 = shadow, filtered values in
@@ -32,7 +32,7 @@ struct ErrorMetrics {
   int gtBoundaryPixels = 0;       // number of GT boundary pixels
 };
 
-// Conventions where DESIGN.md is silent:
+// Conventions the README's definitions leave open:
 // - A boundary pixel (GT or technique) is a receiver with a 4-neighbour that is a receiver
 //   of the other binary state; non-receivers never make a boundary. Distances are
 //   Euclidean in the image plane and may cross non-receiver pixels.
@@ -44,7 +44,7 @@ struct ErrorMetrics {
 //   boundary pixel. p95 is the value at index ceil(0.95 n) - 1 of the sorted pool. Neither
 //   image with a boundary: mean = p95 = 0. Exactly one with a boundary: mean = p95 = the
 //   image diagonal sqrt(w^2 + h^2), the worst distance possible.
-// - leak uses v > 0.5 (as DESIGN.md words it), overestimation v < 0.5, so a technique
+// - leak uses v > 0.5 (as the README defines it), overestimation v < 0.5, so a technique
 //   value of exactly 0.5 on a GT-shadow pixel is a mismatch but not a leak.
 //
 // Throws std::invalid_argument when an image is not one channel, the sizes differ, there
