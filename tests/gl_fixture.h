@@ -17,4 +17,12 @@ TechniqueRun runTechnique(FrameRunner& runner, const std::string& id,
 // The stencil shadow-volume ground truth of the runner's frame.
 ImageF groundTruthVisibility(FrameRunner& runner);
 
+// A parameterized test's case name from a readable label ("spot-near10" → "spot_near10"):
+// GoogleTest allows only letters, digits and underscores.
+inline std::string caseName(std::string label) {
+  for (char& ch : label)
+    if (ch == '-') ch = '_';
+  return label;
+}
+
 }  // namespace testbed::test

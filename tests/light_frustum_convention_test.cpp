@@ -166,12 +166,7 @@ TEST_P(LightFrustumConventionGl, OutsideIsShadowInEveryTechniqueAndGroundTruth) 
 }
 
 INSTANTIATE_TEST_SUITE_P(Sides, LightFrustumConventionGl, ::testing::ValuesIn(cases()),
-                         [](const auto& info) {
-                           std::string name = info.param.name;
-                           for (char& ch : name)
-                             if (ch == '-') ch = '_';
-                           return name;
-                         });
+                         [](const auto& info) { return test::caseName(info.param.name); });
 
 }  // namespace
 }  // namespace testbed

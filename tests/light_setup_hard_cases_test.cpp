@@ -127,12 +127,7 @@ INSTANTIATE_TEST_SUITE_P(
                       // world units here, and the slope term alone leaves acne where the
                       // dragon's surface turns from the sun (0.058 %; 0.048 % at 16 bits).
                       HardCase{"sun-10deg-fitted-dragon", sun(10, 0), true, true, 0.07}),
-    [](const auto& info) {
-      std::string name = info.param.name;
-      for (char& ch : name)
-        if (ch == '-') ch = '_';
-      return name;
-    });
+    [](const auto& info) { return test::caseName(info.param.name); });
 
 }  // namespace
 }  // namespace testbed
