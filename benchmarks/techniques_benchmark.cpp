@@ -21,7 +21,7 @@
 #include <sstream>
 #include <vector>
 
-#include "testbed/app/frame_runner.h"
+#include "testbed/harness/frame_runner.h"
 #include "testbed/app/plugins.h"
 #include "testbed/core/error.h"
 #include "testbed/gl/context.h"

@@ -16,7 +16,7 @@
 #include <string>
 
 #include "groundtruth/shadow_volumes.h"
-#include "testbed/app/frame_runner.h"
+#include "testbed/harness/frame_runner.h"
 #include "testbed/io/image_io.h"
 #include "testbed/scene/primitives.h"
 #include "tests/gl_fixture.h"

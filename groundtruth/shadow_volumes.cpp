@@ -136,7 +136,7 @@ class ShadowVolumes final : public ShadowTechnique {
   GLsizei upload(const Scene& scene, const VolumeLight& light) {
     if (topologyOf_ != &scene) {  // adjacency is gathered once per scene
       topologies_.clear();
-      for (const auto& object : scene.objects) topologies_.push_back(volumeTopology(object.mesh));
+      for (const auto& object : scene.objects) topologies_.push_back(meshTopology(object.mesh));
       topologyOf_ = &scene;
     }
     vertices_.clear();
@@ -208,7 +208,7 @@ class ShadowVolumes final : public ShadowTechnique {
   Framebuffer framebuffer_;
   GLuint target_ = 0;
   std::vector<VolumeVertex> vertices_;
-  std::vector<VolumeTopology> topologies_;
+  std::vector<MeshTopology> topologies_;
   const Scene* topologyOf_ = nullptr;
 };
 

@@ -3,8 +3,6 @@
 namespace testbed {
 namespace {
 
-glm::vec3 toGlm(const OpenMesh::Vec3f& p) { return {p[0], p[1], p[2]}; }
-
 glm::vec4 planeThrough(const glm::vec3& normal, const glm::vec3& point) {
   const float length = glm::length(normal);
   if (length == 0.0f) return {0, 0, 0, 1};
@@ -16,31 +14,11 @@ enum Facing : signed char { kNone = 0, kTowards = 1, kAway = -1 };
 
 }  // namespace
 
-bool isClosed(const TriMesh& mesh) {
-  for (const auto edge : mesh.edges())
-    if (mesh.is_boundary(edge)) return false;
-  return true;
-}
-
-VolumeTopology volumeTopology(const TriMesh& mesh) {
-  VolumeTopology topology;
-  topology.closed = isClosed(mesh);
-  topology.corners.reserve(mesh.n_faces() * 3);
-  topology.neighbour.reserve(mesh.n_faces() * 3);
-  for (const auto face : mesh.faces())
-    for (const auto he : face.halfedges()) {
-      topology.corners.push_back(toGlm(mesh.point(he.from())));
-      const auto opposite = he.opp().face();
-      topology.neighbour.push_back(opposite.is_valid() ? opposite.idx() : -1);
-    }
-  return topology;
-}
-
 VolumeStats appendShadowVolume(const TriMesh& mesh, const VolumeLight& light, std::vector<VolumeVertex>& out) {
-  return appendShadowVolume(volumeTopology(mesh), light, out);
+  return appendShadowVolume(meshTopology(mesh), light, out);
 }
 
-VolumeStats appendShadowVolume(const VolumeTopology& mesh, const VolumeLight& light, std::vector<VolumeVertex>& out) {
+VolumeStats appendShadowVolume(const MeshTopology& mesh, const VolumeLight& light, std::vector<VolumeVertex>& out) {
   VolumeStats stats;
   (mesh.closed ? stats.closedMeshes : stats.openMeshes) = 1;
   const std::size_t faces = mesh.corners.size() / 3;

@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 
 #include "testbed/scene/mesh.h"
+#include "testbed/scene/mesh_topology.h"
 
 namespace testbed {
 
@@ -40,22 +41,9 @@ struct VolumeStats {
   std::size_t capTriangles = 0, sideQuads = 0, closedMeshes = 0, openMeshes = 0;
 };
 
-// The light-independent part, gathered once per mesh: corners and edge neighbours of every
-// face in flat arrays, so a new light (or area-light sample) costs one pass over them.
-struct VolumeTopology {
-  std::vector<glm::vec3> corners;  // 3 per face, in the mesh's winding
-  std::vector<int> neighbour;      // 3 per face: the face across edge (i, i+1), or -1
-  bool closed = true;
-};
-VolumeTopology volumeTopology(const TriMesh& mesh);
-
 // Appends the volume triangles of a mesh (world space) to `out`, every triangle wound
 // counter-clockwise seen from outside its volume.
-VolumeStats appendShadowVolume(const VolumeTopology& mesh, const VolumeLight& light, std::vector<VolumeVertex>& out);
+VolumeStats appendShadowVolume(const MeshTopology& mesh, const VolumeLight& light, std::vector<VolumeVertex>& out);
 VolumeStats appendShadowVolume(const TriMesh& mesh, const VolumeLight& light, std::vector<VolumeVertex>& out);
-
-// True when every edge of the mesh has two faces (no boundary): then away-facing regions
-// are redundant.
-bool isClosed(const TriMesh& mesh);
 
 }  // namespace testbed

@@ -4,7 +4,7 @@
 #include <map>
 #include <string>
 
-#include "testbed/app/frame_runner.h"
+#include "testbed/harness/frame_runner.h"
 #include "testbed/gl/context.h"
 
 namespace testbed::test {

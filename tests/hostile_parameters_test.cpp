@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "testbed/app/frame_runner.h"
+#include "testbed/harness/frame_runner.h"
 #include "tests/gl_fixture.h"
 
 namespace testbed {

@@ -17,7 +17,7 @@
 
 #include "groundtruth/raycast.h"
 #include "groundtruth/shadow_volumes.h"
-#include "testbed/app/frame_runner.h"
+#include "testbed/harness/frame_runner.h"
 #include "testbed/core/error.h"
 #include "tests/gl_fixture.h"
 #include "tests/test_scenes.h"

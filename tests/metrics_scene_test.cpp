@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "groundtruth/shadow_volumes.h"
-#include "testbed/app/frame_runner.h"
+#include "testbed/harness/frame_runner.h"
 #include "testbed/metrics/metrics.h"
 #include "tests/gl_fixture.h"
 

@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-#include "testbed/app/frame_runner.h"
+#include "testbed/harness/frame_runner.h"
 #include "testbed/scene/primitives.h"
 #include "tests/gl_fixture.h"
 #include "tests/test_scenes.h"

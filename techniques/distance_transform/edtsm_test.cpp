@@ -10,7 +10,7 @@
 #include <map>
 #include <string>
 
-#include "testbed/app/frame_runner.h"
+#include "testbed/harness/frame_runner.h"
 #include "testbed/metrics/metrics.h"
 #include "tests/gl_fixture.h"
 

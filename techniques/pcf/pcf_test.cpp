@@ -10,7 +10,7 @@
 #include <string>
 
 #include "groundtruth/shadow_volumes.h"
-#include "testbed/app/frame_runner.h"
+#include "testbed/harness/frame_runner.h"
 #include "testbed/core/error.h"
 #include "testbed/metrics/metrics.h"
 #include "tests/gl_fixture.h"

@@ -15,7 +15,7 @@
 #include "techniques/prefiltered/moments_format.h"
 #include "testbed/gl/objects.h"
 #include "testbed/gl/pass_timer.h"
-#include "testbed/render/depth_format.h"
+#include "testbed/gl/depth_format.h"
 #include "testbed/render/screen_pass.h"
 #include "testbed/technique/parameters.h"
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "techniques/prefiltered/moments_pass.h"
-#include "testbed/app/frame_runner.h"
+#include "testbed/harness/frame_runner.h"
 #include "testbed/core/error.h"
 #include "testbed/scene/scene.h"
 #include "testbed/technique/registry.h"

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "groundtruth/shadow_volumes.h"
-#include "testbed/app/frame_runner.h"
+#include "testbed/harness/frame_runner.h"
 #include "testbed/metrics/metrics.h"
 #include "testbed/scene/scene.h"
 #include "tests/gl_fixture.h"

@@ -6,7 +6,7 @@
 #include <iostream>
 #include <string>
 
-#include "testbed/app/frame_runner.h"
+#include "testbed/harness/frame_runner.h"
 #include "testbed/metrics/metrics.h"
 #include "tests/gl_fixture.h"
 

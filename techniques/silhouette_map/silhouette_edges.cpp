@@ -2,7 +2,7 @@
 
 namespace testbed {
 
-std::size_t appendSilhouetteEdges(const VolumeTopology& mesh, const LightTransforms& light, std::vector<glm::vec4>& out) {
+std::size_t appendSilhouetteEdges(const MeshTopology& mesh, const LightTransforms& light, std::vector<glm::vec4>& out) {
   const std::size_t faces = mesh.corners.size() / 3;
   // +1 towards, −1 away, 0 degenerate.
   std::vector<signed char> facing(faces, 0);

@@ -6,7 +6,7 @@
 #include <array>
 #include <vector>
 
-#include "groundtruth/volume_geometry.h"
+#include "testbed/scene/mesh_topology.h"
 #include "techniques/revectorization/edge_split_pass.h"
 #include "techniques/silhouette_map/silhouette_edges.h"
 #include "testbed/render/receiver_inputs.h"
@@ -82,7 +82,7 @@ class SilhouetteMap final : public ShadowTechnique {
     }
     if (topologyScene_ != &in.scene || topology_.size() != in.scene.objects.size()) {
       topology_.clear();
-      for (const auto& object : in.scene.objects) topology_.push_back(volumeTopology(object.mesh));
+      for (const auto& object : in.scene.objects) topology_.push_back(meshTopology(object.mesh));
       topologyScene_ = &in.scene;
     }
   }
@@ -124,7 +124,7 @@ class SilhouetteMap final : public ShadowTechnique {
   Framebuffer framebuffer_;
   Buffer edgeBuffer_;
   std::vector<glm::vec4> endpoints_;
-  std::vector<VolumeTopology> topology_;
+  std::vector<MeshTopology> topology_;
   const Scene* topologyScene_ = nullptr;
 };
 

@@ -110,7 +110,7 @@ LightTransforms sun(glm::vec3 direction) {
 TEST(SilhouetteEdges, BoxUnderASunStraightDownHasItsFourTopEdges) {
   // Side faces are edge-on (dot = 0), which counts as facing away, as in the ground truth.
   std::vector<glm::vec4> out;
-  EXPECT_EQ(appendSilhouetteEdges(volumeTopology(makeBox(2, 2, 2)), sun({0, -1, 0}), out), 4u);
+  EXPECT_EQ(appendSilhouetteEdges(meshTopology(makeBox(2, 2, 2)), sun({0, -1, 0}), out), 4u);
   ASSERT_EQ(out.size(), 8u);
   for (const auto& p : out) EXPECT_FLOAT_EQ(p.y, 1.0f);
 }
@@ -118,12 +118,12 @@ TEST(SilhouetteEdges, BoxUnderASunStraightDownHasItsFourTopEdges) {
 TEST(SilhouetteEdges, BoxUnderAnObliqueSunHasASixEdgeOutline) {
   // Three faces lit, three away: the silhouette is the hexagon around the box's shadow.
   std::vector<glm::vec4> out;
-  EXPECT_EQ(appendSilhouetteEdges(volumeTopology(makeBox(2, 2, 2)), sun({-0.3f, -1, -0.5f}), out), 6u);
+  EXPECT_EQ(appendSilhouetteEdges(meshTopology(makeBox(2, 2, 2)), sun({-0.3f, -1, -0.5f}), out), 6u);
 }
 
 TEST(SilhouetteEdges, OpenPlaneContributesItsBoundaryOnly) {
   std::vector<glm::vec4> out;
-  EXPECT_EQ(appendSilhouetteEdges(volumeTopology(makePlane(10, 10, 4)), sun({0.2f, -1, 0}), out), 16u);
+  EXPECT_EQ(appendSilhouetteEdges(meshTopology(makePlane(10, 10, 4)), sun({0.2f, -1, 0}), out), 16u);
 }
 
 TEST(SilhouetteEdges, SpotLightFacingIsPerFace) {
@@ -131,7 +131,7 @@ TEST(SilhouetteEdges, SpotLightFacingIsPerFace) {
   LightTransforms light;
   light.position = {0, 10, 0};
   std::vector<glm::vec4> out;
-  EXPECT_EQ(appendSilhouetteEdges(volumeTopology(makeBox(2, 2, 2)), light, out), 4u);
+  EXPECT_EQ(appendSilhouetteEdges(meshTopology(makeBox(2, 2, 2)), light, out), 4u);
 }
 
 }  // namespace

@@ -13,9 +13,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "groundtruth/volume_geometry.h"
+#include "testbed/scene/mesh_topology.h"
 #include "techniques/silhouette_map/silhouette_edges.h"
-#include "testbed/app/frame_runner.h"
+#include "testbed/harness/frame_runner.h"
 #include "testbed/metrics/metrics.h"
 #include "tests/gl_fixture.h"
 #include "tests/test_scenes.h"
@@ -109,7 +109,7 @@ TEST(SilhouetteMapScene, PassesAndMemory) {
   std::vector<glm::vec4> endpoints;
   std::size_t edges = 0;
   for (const auto& object : scene.objects)
-    edges += appendSilhouetteEdges(volumeTopology(object.mesh), lightTransforms(scene.light), endpoints);
+    edges += appendSilhouetteEdges(meshTopology(object.mesh), lightTransforms(scene.light), endpoints);
   EXPECT_EQ(edges, 6u + 4u);  // the box's hexagon and the floor's border
   EXPECT_EQ(run.memoryBytes, 256u * 256u * 2u + 257u * 257u * 4u + edges * 2u * 16u + 320u * 180u * 2u);
 }
@@ -169,7 +169,7 @@ TEST(SilhouetteMapScene, DragonErrorsLieWhereEdgesShareATexel) {
     return (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * float(n) + 0.5f;
   };
   std::vector<glm::vec4> e;
-  for (const auto& object : scene.objects) appendSilhouetteEdges(volumeTopology(object.mesh), light, e);
+  for (const auto& object : scene.objects) appendSilhouetteEdges(meshTopology(object.mesh), light, e);
   std::map<std::pair<int, int>, std::vector<std::size_t>> crossing;
   for (std::size_t i = 0; i < e.size() / 2; ++i) {
     const glm::vec2 a = project(e[2 * i]), b = project(e[2 * i + 1]);

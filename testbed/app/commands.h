@@ -8,7 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "testbed/app/frame_runner.h"
+#include "testbed/harness/frame_runner.h"
 #include "testbed/io/output_files.h"
 
 namespace testbed {

@@ -10,7 +10,7 @@
 
 #include "testbed/gl/objects.h"
 #include "testbed/gl/pass_timer.h"
-#include "testbed/render/depth_format.h"
+#include "testbed/gl/depth_format.h"
 #include "testbed/render/gpu_scene.h"
 #include "testbed/scene/view.h"
 #include "testbed/technique/parameters.h"

@@ -7,7 +7,7 @@
 
 #include "testbed/report/comparison.h"
 
-#include "testbed/app/frame_runner.h"
+#include "testbed/harness/frame_runner.h"
 
 namespace testbed {
 namespace {

@@ -13,7 +13,7 @@
 #include "testbed/gl/objects.h"
 #include "testbed/gl/pass_timer.h"
 #include "testbed/io/image_io.h"
-#include "testbed/render/depth_format.h"
+#include "testbed/gl/depth_format.h"
 #include "testbed/scene/scene.h"
 #include "testbed/scene/view.h"
 #include "testbed/technique/parameters.h"

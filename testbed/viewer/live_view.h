@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "testbed/app/frame_runner.h"
+#include "testbed/harness/frame_runner.h"
 #include "testbed/metrics/metrics.h"
 
 namespace testbed::viewer {

@@ -6,7 +6,7 @@
 #include <map>
 #include <sstream>
 
-#include "testbed/app/frame_runner.h"
+#include "testbed/harness/frame_runner.h"
 #include "testbed/core/error.h"
 #include "testbed/technique/registry.h"
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "testbed/app/frame_runner.h"
+#include "testbed/harness/frame_runner.h"
 #include "testbed/gl/context_glfw.h"
 #include "testbed/viewer/script.h"
 

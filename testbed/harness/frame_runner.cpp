@@ -1,4 +1,4 @@
-#include "testbed/app/frame_runner.h"
+#include "testbed/harness/frame_runner.h"
 
 #include <algorithm>
 #include <chrono>

@@ -10,7 +10,7 @@
 
 #include "testbed/gl/pass_timer.h"
 #include "testbed/io/image_io.h"
-#include "testbed/render/depth_format.h"
+#include "testbed/gl/depth_format.h"
 #include "testbed/render/gbuffer_pass.h"
 #include "testbed/render/gpu_scene.h"
 #include "testbed/scene/scene.h"
