@@ -102,6 +102,31 @@ FloorCheck checkFloor(const ImageF& visibility, const ImageF& positions, SignedD
   return result;
 }
 
+struct FloorRun {
+  FloorCheck check;
+  std::vector<std::string> passes;  // the timed passes, in order
+};
+
+// Ray casts `scene` at `size` and checks its floor (half size 40) against `signedDistance`.
+template <typename SignedDistance>
+FloorRun rayCastOnTheFloor(const Scene& scene, glm::ivec2 size, SignedDistance signedDistance) {
+  RenderSettings settings;
+  settings.size = size;
+  FrameRunner runner(scene, settings);
+  const TechniqueRun result = runRayCast(runner);
+  return {checkFloor(result.visibility, runner.positions(), signedDistance, 40), result.times.order};
+}
+
+test::Receivers rayCastReceivers(const Scene& scene, glm::ivec2 size) {
+  RenderSettings settings;
+  settings.size = size;
+  FrameRunner runner(scene, settings);
+  return test::receiversOf(runRayCast(runner).visibility);
+}
+
+// Signed distance to the shadow that a 10×10 square centred over the origin casts straight down.
+float toTheSquaresShadow(const glm::vec3& p) { return std::max(std::abs(p.x), std::abs(p.z)) - 5.0f; }
+
 class RayCastAnalytic : public ::testing::Test {
  protected:
   void SetUp() override { test::sharedContext(); }
@@ -118,34 +143,23 @@ TEST_F(RayCastAnalytic, InfoIsAHardGroundTruthWithoutParameters) {
 }
 
 TEST_F(RayCastAnalytic, DirectionalLightCastsTheBoxSquare) {
-  const Scene scene = boxOverPlane(directional({0, -1, 0}));
-  RenderSettings settings;
-  settings.size = {640, 480};
-  FrameRunner runner(scene, settings);
-  const TechniqueRun result = runRayCast(runner);
-  const auto square = [](const glm::vec3& p) { return std::max(std::abs(p.x), std::abs(p.z)) - 5.0f; };
-  const FloorCheck check = checkFloor(result.visibility, runner.positions(), square, 40);
-  EXPECT_GT(check.checked, 100000);
-  EXPECT_GT(check.shadowChecked, 5000);
-  EXPECT_EQ(check.mismatches, 0);
-  EXPECT_EQ(result.times.order, std::vector<std::string>{"raycast"});
+  const FloorRun run = rayCastOnTheFloor(boxOverPlane(directional({0, -1, 0})), {640, 480}, toTheSquaresShadow);
+  EXPECT_GT(run.check.checked, 100000);
+  EXPECT_GT(run.check.shadowChecked, 5000);
+  EXPECT_EQ(run.check.mismatches, 0);
+  EXPECT_EQ(run.passes, std::vector<std::string>{"raycast"});
 }
 
 TEST_F(RayCastAnalytic, SpotLightCastsTheScaledTopFace) {
   // The top face (y = 12) projects largest from a light at height 40: half side 5·40/28;
   // the 60° cone covers |x|, |z| < 40·tan(30°) ≈ 23 on the floor, and shadows beyond.
-  const Scene scene = boxOverPlane(spot({0, 40, 0}, 60));
-  RenderSettings settings;
-  settings.size = {640, 480};
-  FrameRunner runner(scene, settings);
-  const TechniqueRun result = runRayCast(runner);
   const float halfSide = 5.0f * 40.0f / 28.0f, cone = 40.0f * std::tan(glm::radians(30.0f));
   const auto shadowOrCone = [&](const glm::vec3& p) {
     const float chebyshev = std::max(std::abs(p.x), std::abs(p.z));
     // Inside the square or outside the cone is shadow: the distance to the nearer boundary.
     return std::min(chebyshev - halfSide, cone - chebyshev);
   };
-  const FloorCheck check = checkFloor(result.visibility, runner.positions(), shadowOrCone, 40);
+  const FloorCheck check = rayCastOnTheFloor(boxOverPlane(spot({0, 40, 0}, 60)), {640, 480}, shadowOrCone).check;
   EXPECT_GT(check.checked, 100000);
   EXPECT_GT(check.shadowChecked, 5000);
   EXPECT_EQ(check.mismatches, 0);
@@ -159,11 +173,6 @@ TEST_F(RayCastAnalytic, SpotLightCastsTheScaledTopFace) {
 void checkSphereShadow(glm::vec3 direction) {
   // Extent 60 > the floor's half diagonal: the light's box covers the whole floor.
   const LightDesc light = directional(direction, 60);
-  const Scene scene = sphereOverPlane(light);
-  RenderSettings settings;
-  settings.size = {640, 480};
-  FrameRunner runner(scene, settings);
-  const TechniqueRun result = runRayCast(runner);
   const glm::vec3 d = light.direction;
   const float inner = kSphereRadius * std::cos(std::numbers::pi_v<float> / kSphereSegments) *
                       std::cos(std::numbers::pi_v<float> / kSphereRings);
@@ -173,7 +182,7 @@ void checkSphereShadow(glm::vec3 direction) {
     if (distance > kSphereRadius) return distance - kSphereRadius;
     return 0.0f;  // between the mesh's inner and outer bounds: not checked
   };
-  const FloorCheck check = checkFloor(result.visibility, runner.positions(), ellipse, 40);
+  const FloorCheck check = rayCastOnTheFloor(sphereOverPlane(light), {640, 480}, ellipse).check;
   EXPECT_GT(check.checked, 100000);
   // The ellipse's area is π r²/|d.y|; a good share of it must be checked.
   EXPECT_GT(check.shadowChecked, 2000);
@@ -247,46 +256,23 @@ TEST_F(RayCastAnalytic, OpenOccluderBlocksFromItsBackSide) {
   // meets its back side, which must block as much as a front side does.
   Scene scene = floorScene("quad-over-plane", directional({0, -1, 0}));
   scene.objects.push_back({"quad", translated(makePlane(10, 10), {0, 10, 0})});
-  RenderSettings settings;
-  settings.size = {320, 240};
-  FrameRunner runner(scene, settings);
-  const TechniqueRun result = runRayCast(runner);
-  const auto square = [](const glm::vec3& p) { return std::max(std::abs(p.x), std::abs(p.z)) - 5.0f; };
-  const FloorCheck check = checkFloor(result.visibility, runner.positions(), square, 40);
+  const FloorCheck check = rayCastOnTheFloor(scene, {320, 240}, toTheSquaresShadow).check;
   EXPECT_GT(check.shadowChecked, 500);
   EXPECT_EQ(check.mismatches, 0);
 }
 
 TEST_F(RayCastAnalytic, ReceiversFacingAwayFromTheLightAreShadowed) {
-  Scene scene = floorScene("plane-lit-from-below", directional({0, 1, 0}, 60));
-  RenderSettings settings;
-  settings.size = {160, 120};
-  FrameRunner runner(scene, settings);
-  const TechniqueRun result = runRayCast(runner);
-  int receivers = 0;
-  for (float v : result.visibility.pixels)
-    if (!std::isnan(v)) {
-      ++receivers;
-      EXPECT_EQ(v, 0.0f);
-    }
-  EXPECT_GT(receivers, 1000);
+  const test::Receivers receivers =
+      rayCastReceivers(floorScene("plane-lit-from-below", directional({0, 1, 0}, 60)), {160, 120});
+  EXPECT_EQ(receivers.fullyShadowed, receivers.count);
+  EXPECT_GT(receivers.count, 1000);
 }
 
 TEST_F(RayCastAnalytic, LitFloorWithoutOccludersIsLitEverywhereInTheFrustum) {
   // No self-shadowing: a bare floor under an oblique light is lit wherever it faces it.
-  Scene scene = floorScene("bare-floor", directional({0.3f, -1, 0.2f}, 60));
-  RenderSettings settings;
-  settings.size = {320, 240};
-  FrameRunner runner(scene, settings);
-  const TechniqueRun result = runRayCast(runner);
-  int receivers = 0, dark = 0;
-  for (float v : result.visibility.pixels)
-    if (!std::isnan(v)) {
-      ++receivers;
-      dark += v < 0.5f;
-    }
-  EXPECT_GT(receivers, 10000);
-  EXPECT_EQ(dark, 0);
+  const test::Receivers receivers = rayCastReceivers(floorScene("bare-floor", directional({0.3f, -1, 0.2f}, 60)), {320, 240});
+  EXPECT_GT(receivers.count, 10000);
+  EXPECT_EQ(receivers.dark, 0);
 }
 
 // --- Agreement with the shadow volumes ------------------------------------------------
@@ -378,7 +364,7 @@ class RayCastAgreement : public ::testing::Test {
     EXPECT_LE(a.percent(), 0.1) << scene.name << ": " << a.disagree << " of " << a.receivers << " pixels";
   }
   static Scene bundled(const std::string& name) {
-    return loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/" + name + ".json");
+    return test::bundledScene(name);
   }
 };
 

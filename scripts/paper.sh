@@ -9,6 +9,9 @@
 # PAPER_SPECS="gi2016-table2 edtsm-star-table4" regenerates only those, keeping the rest.
 # On a cluster, run each spec through scripts/slurm/submit.sh instead and copy the merged
 # folders in.
+# EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
+# shadow mapping", Computers & Graphics 71 (2018).
+# GI 2016: Macedo & Apolinário, "Revectorization-Based Shadow Mapping", Graphics Interface 2016.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$repo/scripts/setup.sh"

@@ -32,6 +32,7 @@ for scene in "$repo"/scenes/*.json; do
 done
 # The revectorization family's debug views (GI 2016 figures 2-3): discontinuity directions
 # and the oriented normalized discontinuity space, for smsr and rsmss on the bunny.
+# GI 2016: Macedo & Apolinário, "Revectorization-Based Shadow Mapping", Graphics Interface 2016.
 for technique in smsr smsr-2pass rsmss; do
   for view in discontinuity onds; do
     "$testbed" render --scene "$repo/scenes/bunny.json" --technique "$technique" --set debug="$view" \

@@ -4,14 +4,10 @@
 // exactly the baseline's — llvmpipe is deterministic; `testbed check` then reports speed
 // (the ratio to sm) without gating it, since CI machines differ. An intended change of
 // output refreshes the baselines in the same commit: scripts/baselines.sh.
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -19,20 +15,16 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/cli_helpers.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+using namespace testbed::test;
 
 const fs::path kSource = TESTBED_SOURCE_DIR;
 const fs::path kBaselines = kSource / "tests" / "baselines";
-
-std::string readText(const fs::path& file) {
-  std::ifstream in(file);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 std::vector<std::string> bundledScenes() {
   std::vector<std::string> names;
@@ -42,10 +34,10 @@ std::vector<std::string> bundledScenes() {
   return names;
 }
 
-// Runs a shell command; its exit status (-1 when it did not run).
-int run(const std::string& command) {
-  const int status = std::system(command.c_str());
-  return status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+// The words of tests/baselines/settings: the flags every gated run is made with.
+std::vector<std::string> baselineSettings() {
+  std::istringstream words(readFile(kBaselines / "settings"));
+  return {std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
 }
 
 const json* findRecord(const json& records, const std::string& technique) {
@@ -60,17 +52,16 @@ TEST_P(BenchmarkGate, AccuracyAndMemoryEqualTheBaseline) {
   const std::string scene = GetParam();
   const fs::path baseline = kBaselines / scene / "metrics.json";
   ASSERT_TRUE(fs::exists(baseline)) << baseline << " is missing: run scripts/baselines.sh";
-  std::string settings = readText(kBaselines / "settings");
-  settings.erase(settings.find_last_not_of(" \n") + 1);
-  const fs::path out = fs::temp_directory_path() / ("testbed-gate-" + scene + "-" + std::to_string(::getpid()));
-  fs::remove_all(out);
-  const std::string compare = std::string("timeout -k 5 600 '") + TESTBED_BINARY + "' compare --scene '" +
-                              (kSource / "scenes" / (scene + ".json")).string() + "' " + settings + " --out '" +
-                              out.string() + "' > /dev/null";
-  ASSERT_EQ(run(compare), 0) << compare;
+  const TempDir tmp("testbed-gate-" + scene);
+  const fs::path out = tmp / "run";
+  const RunResult compare =
+      runTestbed(with({"compare", "--scene", (kSource / "scenes" / (scene + ".json")).string(), "--out", out.string()},
+                      baselineSettings()),
+                 {.timeoutSeconds = 600});
+  ASSERT_EQ(compare.exitCode, 0) << compare.describe();
 
-  const json expected = json::parse(readText(baseline));
-  const json current = json::parse(readText(out / "metrics.json"));
+  const json expected = json::parse(readFile(baseline));
+  const json current = json::parse(readFile(out / "metrics.json"));
   for (const auto& want : expected) {
     const std::string technique = want["technique"];
     const json* got = findRecord(current, technique);
@@ -81,12 +72,10 @@ TEST_P(BenchmarkGate, AccuracyAndMemoryEqualTheBaseline) {
   EXPECT_EQ(current.size(), expected.size()) << "techniques were added or removed: run scripts/baselines.sh";
 
   // Speed is reported, never gated here: any ratio passes.
-  const std::string check = std::string("'") + TESTBED_BINARY + "' check --baseline '" + baseline.string() +
-                            "' --current '" + out.string() + "' --speed-tolerance 1e9 --out '" +
-                            (out / "check.md").string() + "' > /dev/null";
-  EXPECT_EQ(run(check), 0) << check;
-  std::cout << readText(out / "check.md");
-  fs::remove_all(out);
+  const RunResult check = runTestbed({"check", "--baseline", baseline.string(), "--current", out.string(),
+                                     "--speed-tolerance", "1e9", "--out", (out / "check.md").string()});
+  EXPECT_EQ(check.exitCode, 0) << check.describe();
+  std::cout << readFile(out / "check.md");
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BenchmarkGate, testing::ValuesIn(bundledScenes()),

@@ -22,7 +22,7 @@ using nlohmann::json;
 
 const fs::path kResults = fs::path(TESTBED_SOURCE_DIR) / "results";
 
-using namespace testbed::cli;
+using namespace testbed::test;
 
 // `testbed check ARGS`.
 RunResult check(const std::vector<std::string>& args, const TempDir&) {

@@ -1,7 +1,7 @@
 #pragma once
-// What the end-to-end tests share: temporary folders, small file helpers and running the
-// real `testbed` binary as a subprocess (stdout through a pipe, stderr through a file, a
-// time limit so that a hang fails the test instead of the suite).
+// What the tests share: scratch folders, small file helpers, and running the real
+// `testbed` binary (or any command) as a subprocess (stdout through a pipe, stderr through
+// a file, a time limit so that a hang fails the test instead of the suite).
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -18,10 +19,13 @@
 
 #include <gtest/gtest.h>
 
-namespace testbed::cli {
+#include "testbed/core/error.h"
+
+namespace testbed::test {
 
 namespace fs = std::filesystem;
 
+// Unique across the processes ctest runs in parallel and across the calls of one.
 inline std::string uniqueName(const std::string& prefix) {
   static std::atomic<unsigned> counter{0};
   static const unsigned salt = std::random_device{}();
@@ -31,7 +35,9 @@ inline std::string uniqueName(const std::string& prefix) {
 // A fresh directory under the system temp folder, removed with everything in it.
 class TempDir {
  public:
-  TempDir() : path_(fs::temp_directory_path() / uniqueName("testbed-test")) { fs::create_directories(path_); }
+  explicit TempDir(const std::string& prefix = "testbed-test") : path_(fs::temp_directory_path() / uniqueName(prefix)) {
+    fs::create_directories(path_);
+  }
   ~TempDir() {
     std::error_code ignored;
     fs::remove_all(path_, ignored);
@@ -46,13 +52,16 @@ class TempDir {
   fs::path path_;
 };
 
-inline void writeFile(const fs::path& file, const std::string& text) {
+// Writes `text` to `file`, making its folders first; returns the file.
+inline fs::path writeFile(const fs::path& file, const std::string& text) {
   if (file.has_parent_path()) fs::create_directories(file.parent_path());
   std::ofstream out(file, std::ios::binary);
   out << text;
   EXPECT_TRUE(out.flush()) << "cannot write " << file;
+  return file;
 }
 
+// The whole file; empty when it cannot be read.
 inline std::string readFile(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   std::ostringstream text;
@@ -88,11 +97,12 @@ struct RunResult {
 struct RunOptions {
   fs::path cwd;                                          // empty: the test's own
   std::vector<std::pair<std::string, std::string>> env;  // added to the environment
+  std::vector<std::string> unset;                        // removed from it (`env -u`)
   int timeoutSeconds = 120;
 };
 
-// Runs the testbed binary through /bin/sh with `args`.
-inline RunResult runTestbed(const std::vector<std::string>& args, const RunOptions& options = {}) {
+// Runs `words` (the program, then its arguments) through /bin/sh, stdin from /dev/null.
+inline RunResult runCommand(const std::vector<std::string>& words, const RunOptions& options = {}) {
   const fs::path errFile = fs::temp_directory_path() / uniqueName("testbed-stderr");
   std::string command;
   if (!options.cwd.empty()) command += "cd " + shellQuote(options.cwd.string()) + " && ";
@@ -102,10 +112,13 @@ inline RunResult runTestbed(const std::vector<std::string>& args, const RunOptio
     command += ' ';
     command += shellQuote(word);
   };
+  for (const auto& name : options.unset) {
+    command += " -u";
+    append(name);
+  }
   for (const auto& [name, value] : options.env) append(name + "=" + value);
   command += " timeout -k 5 " + std::to_string(options.timeoutSeconds);
-  append(TESTBED_BINARY);
-  for (const auto& arg : args) append(arg);
+  for (const auto& word : words) append(word);
 
   RunResult result;
   result.command = command;
@@ -126,6 +139,31 @@ inline RunResult runTestbed(const std::vector<std::string>& args, const RunOptio
   return result;
 }
 
+// Runs the testbed binary with `args`.
+inline RunResult runTestbed(std::vector<std::string> args, const RunOptions& options = {}) {
+  args.insert(args.begin(), TESTBED_BINARY);
+  return runCommand(args, options);
+}
+
+// `args` followed by `more`: common flags appended to a command line.
+inline std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
+  args.insert(args.end(), more.begin(), more.end());
+  return args;
+}
+
+// The message of the InputError `action` throws; nothing, and a test failure, when it
+// throws none.
+template <typename Action>
+std::optional<std::string> inputErrorOf(Action&& action) {
+  try {
+    action();
+  } catch (const InputError& error) {
+    return std::string(error.what());
+  }
+  ADD_FAILURE() << "accepted: expected an InputError";
+  return std::nullopt;
+}
+
 // Compares without printing the file: on failure it may hold a whole PNG.
 inline ::testing::AssertionResult fileHolds(const fs::path& file, const std::string& expected) {
   if (!fs::is_regular_file(file)) return ::testing::AssertionFailure() << file << " is not a regular file";
@@ -142,4 +180,4 @@ inline ::testing::AssertionResult rejectedWithOneLine(const RunResult& run) {
   return ::testing::AssertionFailure() << "expected exit 2 and one line\n" << run.describe();
 }
 
-}  // namespace testbed::cli
+}  // namespace testbed::test

@@ -1,4 +1,4 @@
-// End-to-end tests of the `testbed` command line (README/DESIGN "Command line", "Record",
+// End-to-end tests of the `testbed` command line (README "Command line", "Record",
 // "Scene files"). They run the real binary as a subprocess, the way users and scripts do,
 // so they catch what unit tests cannot: option parsing, exit codes, the one-line error
 // contract, and which files end up in --out.
@@ -28,7 +28,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-using namespace testbed::cli;
+using namespace testbed::test;
 
 // `render --scene S` plus defaults (technique sm, a small size) for every option that
 // `extra` does not set itself, then `extra`.

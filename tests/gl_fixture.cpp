@@ -1,5 +1,7 @@
 #include "tests/gl_fixture.h"
 
+#include <cmath>
+#include <filesystem>
 #include <memory>
 
 #include "groundtruth/shadow_volumes.h"
@@ -11,6 +13,17 @@ GlContext& sharedContext() {
   return *context;
 }
 
+Scene bundledScene(const std::string& name) {
+  return loadScene(std::filesystem::path(TESTBED_SOURCE_DIR) / "scenes" / (name + ".json"));
+}
+
+RenderSettings renderSettings(glm::ivec2 size, int mapSize) {
+  RenderSettings settings;
+  settings.size = size;
+  settings.shadowMapSize = mapSize;
+  return settings;
+}
+
 TechniqueRun runTechnique(FrameRunner& runner, const std::string& id,
                           const std::map<std::string, std::string>& set) {
   const auto& technique = findTechnique(id);
@@ -20,6 +33,17 @@ TechniqueRun runTechnique(FrameRunner& runner, const std::string& id,
 ImageF groundTruthVisibility(FrameRunner& runner) {
   const auto& truth = shadowVolumeGroundTruth();
   return runner.run(truth, resolveParameters("groundtruth", truth.info->parameters, {})).visibility;
+}
+
+Receivers receiversOf(const ImageF& visibility) {
+  Receivers receivers;
+  for (float v : visibility.pixels) {
+    if (std::isnan(v)) continue;
+    ++receivers.count;
+    receivers.fullyShadowed += v == 0.0f;
+    receivers.dark += v < 0.5f;
+  }
+  return receivers;
 }
 
 }  // namespace testbed::test

@@ -11,11 +11,23 @@ namespace testbed::test {
 
 GlContext& sharedContext();
 
+// scenes/<name>.json of the source tree ("bunny").
+Scene bundledScene(const std::string& name);
+// A frame of `size` pixels with a `mapSize`² shadow map, the rest as by default.
+RenderSettings renderSettings(glm::ivec2 size, int mapSize);
+
 // Registered technique `id`, its defaults overridden by `set` (name → value as on --set).
 TechniqueRun runTechnique(FrameRunner& runner, const std::string& id,
                           const std::map<std::string, std::string>& set = {});
 // The stencil shadow-volume ground truth of the runner's frame.
 ImageF groundTruthVisibility(FrameRunner& runner);
+
+// The receivers (pixels that are not NaN) of a visibility image: how many there are, how
+// many are fully shadowed (exactly 0) and how many dark (below 0.5).
+struct Receivers {
+  int count = 0, fullyShadowed = 0, dark = 0;
+};
+Receivers receiversOf(const ImageF& visibility);
 
 // A parameterized test's case name from a readable label ("spot-near10" → "spot_near10"):
 // GoogleTest allows only letters, digits and underscores.

@@ -23,7 +23,7 @@ extern char** environ;
 namespace {
 
 namespace fs = std::filesystem;
-using namespace testbed::cli;
+using namespace testbed::test;
 using nlohmann::json;
 
 const std::string kWall = std::string(TESTBED_SOURCE_DIR) + "/scenes/wall.json";

@@ -64,11 +64,11 @@ void scanScene(const Scene& scene) {
 }
 
 TEST(HostileParameters, EveryTechniqueAtEveryParameterLimitIsFiniteOnASpotLitScene) {
-  scanScene(loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/wall.json"));
+  scanScene(test::bundledScene("wall"));
 }
 
 TEST(HostileParameters, EveryTechniqueAtEveryParameterLimitIsFiniteOnADirectionalScene) {
-  scanScene(loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/stacked_occluders.json"));
+  scanScene(test::bundledScene("stacked_occluders"));
 }
 
 }  // namespace

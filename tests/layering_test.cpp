@@ -36,7 +36,7 @@ const std::vector<std::vector<std::string>> kLayers = {
 
 // The folder a repository-relative path belongs to: "testbed/<x>", or "techniques" (every
 // technique folder is one layer: a technique may build on a sibling's shared code, as
-// EDTSM* builds on revectorization), or "groundtruth".
+// edtsm-star builds on revectorization), or "groundtruth".
 std::string folderOf(const std::string& path) {
   const auto slash = path.find('/');
   if (slash == std::string::npos) return {};

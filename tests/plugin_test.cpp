@@ -22,15 +22,10 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-using namespace testbed::cli;
+using namespace testbed::test;
 
 const std::string kScene = std::string(TESTBED_SOURCE_DIR) + "/scenes/wall.json";
 const std::vector<std::string> kSmall = {"--size", "160x90", "--shadow-map", "256"};
-
-std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
-  args.insert(args.end(), more.begin(), more.end());
-  return args;
-}
 
 // ---------------------------------------------------------------------------------------
 // A working plugin

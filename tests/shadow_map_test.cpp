@@ -48,64 +48,37 @@ class ShadowMapAnalytic : public ::testing::Test {
  protected:
   void SetUp() override { test::sharedContext(); }
 
-  TechniqueRun run(FrameRunner& runner) {
-    const auto& sm = findTechnique("sm");
-    return runner.run(sm, resolveParameters("sm", sm.info->parameters, {}));
+  static TechniqueRun run(FrameRunner& runner) { return test::runTechnique(runner, "sm"); }
+
+  // The floor under `light` shows a `halfSide` square of shadow, exactly away from a band of
+  // 1.5 texels around its outline, over the part of the floor (|x|, |z| < coverHalf) that
+  // the `mapSize`² map covers (a texel: 2 · coverHalf / mapSize on the floor).
+  static void expectSquareShadow(const LightDesc& light, int mapSize, float halfSide, float coverHalf) {
+    const Scene scene = boxOverPlane(light);  // the runner keeps a reference
+    FrameRunner runner(scene, test::renderSettings({640, 480}, mapSize));
+    const TechniqueRun result = run(runner);
+    const float texel = 2 * coverHalf / float(mapSize);
+    const FloorCheck check = checkFloor(result.visibility, runner.positions(), halfSide, coverHalf, 1.5f * texel);
+    EXPECT_GT(check.checked, 50000);
+    EXPECT_GT(check.inShadowChecked, 2000);
+    EXPECT_EQ(check.mismatches, 0);
   }
 };
 
 TEST_F(ShadowMapAnalytic, DirectionalLightCastsTheBoxSquare) {
-  LightDesc light;
-  light.type = LightType::Directional;
-  light.direction = {0, -1, 0};
-  light.extent = 40;
-  const Scene scene = boxOverPlane(light);
-  RenderSettings settings;
-  settings.size = {640, 480};
-  settings.shadowMapSize = 512;
-  FrameRunner runner(scene, settings);
-  const TechniqueRun result = run(runner);
-  const float texel = 2 * light.extent / settings.shadowMapSize;
-  const FloorCheck check = checkFloor(result.visibility, runner.positions(), 5.0f, light.extent, 1.5f * texel);
-  EXPECT_GT(check.checked, 50000);
-  EXPECT_GT(check.inShadowChecked, 2000);
-  EXPECT_EQ(check.mismatches, 0);
+  expectSquareShadow(test::directional({0, -1, 0}, 40), 512, 5.0f, 40);
 }
 
 TEST_F(ShadowMapAnalytic, SpotLightCastsTheScaledTopFace) {
-  LightDesc light;
-  light.type = LightType::Spot;
-  light.eye = {0, 40, 0};
-  light.target = {0, 0, 0};
-  light.fovDegrees = 60;
-  const Scene scene = boxOverPlane(light);
-  RenderSettings settings;
-  settings.size = {640, 480};
-  settings.shadowMapSize = 1024;
-  FrameRunner runner(scene, settings);
-  const TechniqueRun result = run(runner);
-  // The top face (y = 12) projects largest: half side 5 · 40 / 28. A texel covers
-  // 2·40·tan(30°)/1024 on the floor under the light (the map is square, the floor flat).
-  const float halfSide = 5.0f * 40.0f / 28.0f;
-  const float texel = 2 * 40.0f * std::tan(glm::radians(30.0f)) / settings.shadowMapSize;
-  const FloorCheck check = checkFloor(result.visibility, runner.positions(), halfSide,
-                                        40.0f * std::tan(glm::radians(30.0f)), 1.5f * texel);
-  EXPECT_GT(check.checked, 50000);
-  EXPECT_GT(check.inShadowChecked, 2000);
-  EXPECT_EQ(check.mismatches, 0);
+  // The top face (y = 12) projects largest: half side 5 · 40 / 28. The 60° cone covers
+  // |x|, |z| < 40·tan(30°) on the floor under the light (the map is square, the floor flat).
+  expectSquareShadow(test::spot({0, 40, 0}, 60), 1024, 5.0f * 40.0f / 28.0f, 40.0f * std::tan(glm::radians(30.0f)));
 }
 
 TEST_F(ShadowMapAnalytic, OutsideTheSpotConeIsShadowed) {
-  LightDesc light;
-  light.type = LightType::Spot;
-  light.eye = {0, 40, 0};
-  light.target = {0, 0, 0};
-  light.fovDegrees = 30;  // covers |x|, |z| < 40·tan(15°) ≈ 10.7 on the floor
-  const Scene scene = boxOverPlane(light);
-  RenderSettings settings;
-  settings.size = {320, 240};
-  settings.shadowMapSize = 256;
-  FrameRunner runner(scene, settings);
+  // The 30° cone covers |x|, |z| < 40·tan(15°) ≈ 10.7 on the floor.
+  const Scene scene = boxOverPlane(test::spot({0, 40, 0}, 30));
+  FrameRunner runner(scene, test::renderSettings({320, 240}, 256));
   const TechniqueRun result = run(runner);
   const ImageF& positions = runner.positions();
   int outside = 0;
@@ -122,31 +95,15 @@ TEST_F(ShadowMapAnalytic, OutsideTheSpotConeIsShadowed) {
 TEST_F(ShadowMapAnalytic, ReceiversFacingAwayFromTheLightAreShadowed) {
   // Light from below the floor: the floor's upper side faces away, so nothing on it is lit
   // although no occluder lies between it and the light.
-  LightDesc light;
-  light.type = LightType::Directional;
-  light.direction = {0, 1, 0};
-  light.extent = 60;
-  Scene scene = boxOverPlane(light);
-  scene.objects.pop_back();  // plane only
-  RenderSettings settings;
-  settings.size = {160, 120};
-  settings.shadowMapSize = 256;
-  FrameRunner runner(scene, settings);
-  const TechniqueRun result = run(runner);
-  int receivers = 0;
-  for (float v : result.visibility.pixels)
-    if (!std::isnan(v)) {
-      ++receivers;
-      EXPECT_EQ(v, 0.0f);
-    }
-  EXPECT_GT(receivers, 1000);
+  const Scene scene = test::floorScene("plane-lit-from-below", test::directional({0, 1, 0}, 60));
+  FrameRunner runner(scene, test::renderSettings({160, 120}, 256));
+  const test::Receivers receivers = test::receiversOf(run(runner).visibility);
+  EXPECT_EQ(receivers.fullyShadowed, receivers.count);
+  EXPECT_GT(receivers.count, 1000);
 }
 
 TEST_F(ShadowMapAnalytic, GBufferHoldsWorldPositionsAndCoverage) {
-  LightDesc light;
-  light.type = LightType::Directional;
-  light.direction = {0, -1, 0};
-  Scene scene = boxOverPlane(light);
+  Scene scene = boxOverPlane(test::directional({0, -1, 0}, 10));
   scene.camera.eye = {0, 50, -0.001f};  // straight down at the origin
   RenderSettings settings;
   settings.size = {101, 101};

@@ -37,22 +37,23 @@ std::string missingTool(const std::vector<std::string>& tools) {
 // Stops the daemons when the test ends, however it ends.
 struct LocalCluster {
   fs::path dir;
-  ~LocalCluster() { runCommand({(kSlurmScripts / "local_cluster.sh").string(), "stop", dir.string()}, 60); }
+  ~LocalCluster() { runCommand({(kSlurmScripts / "local_cluster.sh").string(), "stop", dir.string()}, {.timeoutSeconds = 60}); }
 };
 
 TEST(Slurm, TwoShardJobArrayAndMergeHoldTheLocalRunsCells) {
   const std::string missing = missingTool({"munged", "slurmctld", "slurmd", "sbatch", "squeue", "sinfo"});
   if (!missing.empty())
     GTEST_SKIP() << missing << " not installed: the Slurm test needs Debian's slurm-wlm and munge (scripts/setup.sh)";
-  ScratchDir tmp("testbed-slurm");
+  TempDir tmp("testbed-slurm");
   const LocalCluster cluster{tmp / "cluster"};
-  const CommandResult start = runCommand({(kSlurmScripts / "local_cluster.sh").string(), "start", cluster.dir.string()}, 60);
-  ASSERT_EQ(start.exitCode, 0) << start.describe() << "\n" << readText(cluster.dir / "slurmctld.log")
-                               << readText(cluster.dir / "slurmd.log");
-  const std::string env = "env SLURM_CONF=" + quoted((cluster.dir / "slurm.conf").string()) +
-                          " TESTBED_BINARY=" + quoted(TESTBED_BINARY);
+  const RunResult start = runCommand({(kSlurmScripts / "local_cluster.sh").string(), "start", cluster.dir.string()},
+                                     {.timeoutSeconds = 60});
+  ASSERT_EQ(start.exitCode, 0) << start.describe() << "\n" << readFile(cluster.dir / "slurmctld.log")
+                               << readFile(cluster.dir / "slurmd.log");
+  const RunOptions slurm = {.env = {{"SLURM_CONF", (cluster.dir / "slurm.conf").string()}, {"TESTBED_BINARY", TESTBED_BINARY}},
+                            .timeoutSeconds = 60};
   const fs::path out = tmp / "sweep";
-  const CommandResult submit = runCommand({(kSlurmScripts / "submit.sh").string(), tinySpecFile().string(), out.string(), "2"}, 60, env);
+  const RunResult submit = runCommand({(kSlurmScripts / "submit.sh").string(), tinySpecFile().string(), out.string(), "2"}, slurm);
   ASSERT_EQ(submit.exitCode, 0) << submit.describe();
   std::istringstream ids(submit.out);
   std::string array, merge;
@@ -63,21 +64,21 @@ TEST(Slurm, TwoShardJobArrayAndMergeHoldTheLocalRunsCells) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(180);
   bool done = false;
   while (!done && std::chrono::steady_clock::now() < deadline) {
-    const CommandResult queue = runCommand({"squeue", "-h", "-j", array + "," + merge}, 20, env);
+    const RunResult queue = runCommand({"squeue", "-h", "-j", array + "," + merge}, {.env = slurm.env, .timeoutSeconds = 20});
     done = queue.exitCode == 0 && queue.out.find_first_not_of(" \n") == std::string::npos;
     if (!done) std::this_thread::sleep_for(std::chrono::milliseconds(500));
   }
-  ASSERT_TRUE(done) << "the jobs did not finish within 180 s\n" << readText(cluster.dir / "slurmctld.log");
-  ASSERT_TRUE(fs::exists(out / "records.json")) << readText(out / "logs" / "shard-1.log") << readText(out / "logs" / "shard-2.log")
-                                                << readText(out / "logs" / "merge.log");
-  EXPECT_NE(readText(out / "logs" / "shard-1.log").find("shard 1/2"), std::string::npos);
-  EXPECT_NE(readText(out / "logs" / "shard-2.log").find("shard 2/2"), std::string::npos);
+  ASSERT_TRUE(done) << "the jobs did not finish within 180 s\n" << readFile(cluster.dir / "slurmctld.log");
+  ASSERT_TRUE(fs::exists(out / "records.json")) << readFile(out / "logs" / "shard-1.log") << readFile(out / "logs" / "shard-2.log")
+                                                << readFile(out / "logs" / "merge.log");
+  EXPECT_NE(readFile(out / "logs" / "shard-1.log").find("shard 1/2"), std::string::npos);
+  EXPECT_NE(readFile(out / "logs" / "shard-2.log").find("shard 2/2"), std::string::npos);
   EXPECT_TRUE(fs::exists(out / "tiny.md"));
 
-  const CommandResult local = runTestbed({"sweep", "--spec", tinySpecFile().string(), "--no-plot", "--out", (tmp / "local").string()});
+  const RunResult local = runTestbed({"sweep", "--spec", tinySpecFile().string(), "--no-plot", "--out", (tmp / "local").string()});
   ASSERT_EQ(local.exitCode, 0) << local.describe();
-  EXPECT_EQ(cellsOf(nlohmann::json::parse(readText(out / "records.json"))),
-            cellsOf(nlohmann::json::parse(readText(tmp / "local" / "records.json"))));
+  EXPECT_EQ(cellsOf(nlohmann::json::parse(readFile(out / "records.json"))),
+            cellsOf(nlohmann::json::parse(readFile(tmp / "local" / "records.json"))));
 }
 
 }  // namespace

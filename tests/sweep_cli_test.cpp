@@ -3,14 +3,8 @@
 // table, plot and close-up figure; shards joined by merge hold the same cells as a whole
 // run; merge refuses shards of other specs or builds, missing or doubled shards, and keeps
 // records of different backends in tables of their own.
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cstdio>
+#include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -26,15 +20,15 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 TEST(CliSweep, BadSpecsAndShardsAreOneLineAndWriteNothing) {
-  ScratchDir tmp("sweep-bad");
-  json spec = json::parse(readText(tinySpecFile()));
+  TempDir tmp("sweep-bad");
+  json spec = json::parse(readFile(tinySpecFile()));
   spec["scenes"]["wall"] = (fs::path(TESTBED_SOURCE_DIR) / "scenes" / "wall.json").string();
   spec["rows"][1]["colour"] = "red";
-  writeText(tmp / "unknown-key.json", spec.dump());
+  writeFile(tmp / "unknown-key.json", spec.dump());
   spec["rows"][1].erase("colour");
   spec["columns"][0]["shadow_map"] = "big";
-  writeText(tmp / "wrong-type.json", spec.dump());
-  writeText(tmp / "nan.json", R"({"name": "x", "citation": "c", "scenes": {}, "columns": [NaN], "rows": []})");
+  writeFile(tmp / "wrong-type.json", spec.dump());
+  writeFile(tmp / "nan.json", R"({"name": "x", "citation": "c", "scenes": {}, "columns": [NaN], "rows": []})");
   struct Case {
     std::vector<std::string> args;
     std::string expected;
@@ -50,7 +44,7 @@ TEST(CliSweep, BadSpecsAndShardsAreOneLineAndWriteNothing) {
   for (const auto& c : cases) {
     std::vector<std::string> args = {"sweep", "--out", (tmp / "out").string()};
     args.insert(args.end(), c.args.begin(), c.args.end());
-    const CommandResult run = runTestbed(args);
+    const RunResult run = runTestbed(args);
     EXPECT_EQ(run.exitCode, 2) << run.describe();
     EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.describe();
     EXPECT_NE(run.err.find(c.expected), std::string::npos) << run.describe();
@@ -59,18 +53,18 @@ TEST(CliSweep, BadSpecsAndShardsAreOneLineAndWriteNothing) {
 }
 
 TEST(CliSweep, WholeRunWritesRecordsTableAndFigure) {
-  ScratchDir tmp("sweep-whole");
-  const CommandResult run = runTestbed({"sweep", "--spec", tinySpecFile().string(), "--out", (tmp / "out").string()});
+  TempDir tmp("sweep-whole");
+  const RunResult run = runTestbed({"sweep", "--spec", tinySpecFile().string(), "--out", (tmp / "out").string()});
   ASSERT_EQ(run.exitCode, 0) << run.describe();
   EXPECT_NE(run.err.find("[6/6] pcf on wall (160x90, map 128²"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("ETA"), std::string::npos) << run.err;
-  const json records = json::parse(readText(tmp / "out" / "records.json"));
+  const json records = json::parse(readFile(tmp / "out" / "records.json"));
   ASSERT_EQ(records.size(), 6u);  // per map size: groundtruth, sm, pcf
   for (std::size_t i = 0; i < records.size(); ++i) {
     EXPECT_EQ(records[i]["cell"], i);
     EXPECT_TRUE(records[i]["error"].is_object()) << records[i].dump();
   }
-  const std::string md = readText(tmp / "out" / "tiny.md");
+  const std::string md = readFile(tmp / "out" / "tiny.md");
   EXPECT_NE(md.find("| PCF 3 × 3 |"), std::string::npos) << md;
   EXPECT_NE(md.find("- command: testbed sweep"), std::string::npos) << md;
   EXPECT_NE(md.find("- backend: osmesa"), std::string::npos) << md;
@@ -79,20 +73,20 @@ TEST(CliSweep, WholeRunWritesRecordsTableAndFigure) {
 }
 
 TEST(CliMerge, ShardsJoinIntoTheWholeRunsCellsAndMismatchesAreRefused) {
-  ScratchDir tmp("sweep-merge");
+  TempDir tmp("sweep-merge");
   const std::string spec = tinySpecFile().string();
   for (const char* shard : {"1/2", "2/2"}) {
-    const CommandResult run = runTestbed({"sweep", "--spec", spec, "--shard", shard, "--out",
+    const RunResult run = runTestbed({"sweep", "--spec", spec, "--shard", shard, "--out",
                                 (tmp / ("shard" + std::string(1, shard[0]))).string()});
     ASSERT_EQ(run.exitCode, 0) << run.describe();
   }
-  const CommandResult whole = runTestbed({"sweep", "--spec", spec, "--no-plot", "--out", (tmp / "whole").string()});
+  const RunResult whole = runTestbed({"sweep", "--spec", spec, "--no-plot", "--out", (tmp / "whole").string()});
   ASSERT_EQ(whole.exitCode, 0) << whole.describe();
-  const CommandResult merged = runTestbed({"merge", "--no-plot", "--out", (tmp / "merged").string(), (tmp / "shard1").string(),
+  const RunResult merged = runTestbed({"merge", "--no-plot", "--out", (tmp / "merged").string(), (tmp / "shard1").string(),
                                  (tmp / "shard2").string()});
   ASSERT_EQ(merged.exitCode, 0) << merged.describe();
-  EXPECT_EQ(cellsOf(json::parse(readText(tmp / "merged" / "records.json"))),
-            cellsOf(json::parse(readText(tmp / "whole" / "records.json"))));
+  EXPECT_EQ(cellsOf(json::parse(readFile(tmp / "merged" / "records.json"))),
+            cellsOf(json::parse(readFile(tmp / "whole" / "records.json"))));
   EXPECT_TRUE(fs::exists(tmp / "merged" / "tiny.md"));
   EXPECT_TRUE(fs::exists(tmp / "merged" / "tiny-closeup-wall.png"));
 
@@ -101,9 +95,9 @@ TEST(CliMerge, ShardsJoinIntoTheWholeRunsCellsAndMismatchesAreRefused) {
                 .exitCode,
             0);
   fs::copy(tmp / "shard2", tmp / "rebuilt", fs::copy_options::recursive);
-  json manifest = json::parse(readText(tmp / "rebuilt" / "sweep.json"));
+  json manifest = json::parse(readFile(tmp / "rebuilt" / "sweep.json"));
   manifest["build"] = "0000000000000000";
-  writeText(tmp / "rebuilt" / "sweep.json", manifest.dump());
+  writeFile(tmp / "rebuilt" / "sweep.json", manifest.dump());
   struct Case {
     std::vector<std::string> shards;
     std::string expected;
@@ -118,7 +112,7 @@ TEST(CliMerge, ShardsJoinIntoTheWholeRunsCellsAndMismatchesAreRefused) {
   for (const auto& c : cases) {
     std::vector<std::string> args = {"merge", "--no-plot", "--out", (tmp / "refused").string()};
     for (const auto& s : c.shards) args.push_back((tmp / s).string());
-    const CommandResult run = runTestbed(args);
+    const RunResult run = runTestbed(args);
     EXPECT_EQ(run.exitCode, 2) << run.describe();
     EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.describe();
     EXPECT_NE(run.err.find(c.expected), std::string::npos) << run.describe();
@@ -126,15 +120,15 @@ TEST(CliMerge, ShardsJoinIntoTheWholeRunsCellsAndMismatchesAreRefused) {
   }
 
   // A shard run on another backend: its records go to a table of their own.
-  json records = json::parse(readText(tmp / "shard2" / "records.json"));
+  json records = json::parse(readFile(tmp / "shard2" / "records.json"));
   for (auto& r : records) r["backend"] = "egl: NVIDIA H200";
-  writeText(tmp / "shard2" / "records.json", records.dump());
-  const CommandResult apart = runTestbed({"merge", "--no-plot", "--out", (tmp / "apart").string(), (tmp / "shard1").string(),
+  writeFile(tmp / "shard2" / "records.json", records.dump());
+  const RunResult apart = runTestbed({"merge", "--no-plot", "--out", (tmp / "apart").string(), (tmp / "shard1").string(),
                                 (tmp / "shard2").string()});
   ASSERT_EQ(apart.exitCode, 0) << apart.describe();
   EXPECT_TRUE(fs::exists(tmp / "apart" / "tiny.egl-nvidia-h200.md"));
   EXPECT_FALSE(fs::exists(tmp / "apart" / "tiny.md"));
-  const std::string egl = readText(tmp / "apart" / "tiny.egl-nvidia-h200.md");
+  const std::string egl = readFile(tmp / "apart" / "tiny.egl-nvidia-h200.md");
   EXPECT_NE(egl.find("- backend: egl: NVIDIA H200"), std::string::npos) << egl;
   EXPECT_NE(egl.find("—"), std::string::npos) << egl;  // shard 1's cells are not in this table
 }

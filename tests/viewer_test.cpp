@@ -26,6 +26,7 @@
 #include "testbed/technique/registry.h"
 #include "testbed/viewer/panel.h"
 #include "testbed/viewer/viewer.h"
+#include "tests/cli_helpers.h"
 
 extern char** environ;
 
@@ -33,6 +34,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+using namespace testbed::test;
 
 constexpr const char* kXvfb = "/usr/bin/Xvfb";
 
@@ -78,44 +80,20 @@ class Xvfb {
   std::string display_;
 };
 
-std::string quote(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-struct Outcome {
-  int exitCode = -1;
-  std::string err;
-};
-
 // Runs the testbed binary with `display` as DISPLAY (empty: none at all).
-Outcome testbed(const std::vector<std::string>& args, const std::string& display = {}) {
-  const fs::path errFile = fs::temp_directory_path() / ("viewer-test-" + std::to_string(::getpid()) + ".err");
-  std::string command = display.empty() ? "env -u DISPLAY" : "env DISPLAY=" + quote(display);
-  command += " timeout -k 5 180 " + quote(TESTBED_BINARY);
-  for (const auto& a : args) command += " " + quote(a);
-  command += " >/dev/null 2>" + quote(errFile.string());
-  const int status = std::system(command.c_str());
-  Outcome run;
-  run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(errFile);
-  std::ostringstream text;
-  text << in.rdbuf();
-  run.err = text.str();
-  fs::remove(errFile);
-  return run;
+RunResult testbed(const std::vector<std::string>& args, const std::string& display = {}) {
+  RunOptions options{.timeoutSeconds = 180};
+  if (display.empty())
+    options.unset = {"DISPLAY"};
+  else
+    options.env = {{"DISPLAY", display}};
+  return runTestbed(args, options);
 }
 
 fs::path scene(const std::string& name) { return fs::path(TESTBED_SOURCE_DIR) / "scenes" / name; }
 
 // Small enough for llvmpipe to run a dozen techniques in seconds.
 const std::vector<std::string> kCommon = {"--size", "320x180", "--shadow-map", "512"};
-
-std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
-  args.insert(args.end(), more.begin(), more.end());
-  return args;
-}
 
 // Largest difference of two images in 8-bit steps; 256 when their shapes differ.
 int maxStepDifference(const testbed::ImageF& a, const testbed::ImageF& b) {
@@ -138,42 +116,32 @@ class ViewerTest : public ::testing::Test {
     if (!fs::exists(kXvfb)) GTEST_SKIP() << kXvfb << " is not installed (Debian package xvfb)";
     xvfb_ = std::make_unique<Xvfb>();
     ASSERT_FALSE(xvfb_->display().empty()) << "Xvfb did not start";
-    dir_ = fs::temp_directory_path() / ("testbed-viewer-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
   }
-  void TearDown() override {
-    xvfb_.reset();
-    if (!dir_.empty()) fs::remove_all(dir_);
-  }
+  void TearDown() override { xvfb_.reset(); }
 
-  Outcome view(const std::vector<std::string>& args) { return testbed(with({"view"}, args), xvfb_->display()); }
+  RunResult view(const std::vector<std::string>& args) { return testbed(with({"view"}, args), xvfb_->display()); }
 
   // `render` (default backend, osmesa) of `id` on `sceneFile`; returns its T.png.
   testbed::ImageF render(const fs::path& sceneFile, const std::string& id, const std::vector<std::string>& extra = {}) {
     const fs::path out = dir_ / ("render-" + std::to_string(renders_++));
-    const Outcome run = testbed(with(with({"render", "--scene", sceneFile.string(), "--technique", id, "--out", out.string()},
+    const RunResult run = testbed(with(with({"render", "--scene", sceneFile.string(), "--technique", id, "--out", out.string()},
                                       kCommon),
                                  extra));
     EXPECT_EQ(run.exitCode, 0) << run.err;
     return testbed::readImage(out / (id + ".png"));
   }
 
-  fs::path writeScript(const std::string& text) {
-    const fs::path file = dir_ / "script.txt";
-    std::ofstream(file) << text;
-    return file;
-  }
+  fs::path writeScript(const std::string& text) { return writeFile(dir_ / "script.txt", text); }
 
   std::unique_ptr<Xvfb> xvfb_;
-  fs::path dir_;
+  TempDir dir_{"testbed-viewer"};
   int renders_ = 0;
 };
 
 TEST_F(ViewerTest, FramesScreenshotEqualsRenderForAHardAndAFilteredTechnique) {
   for (const auto& [id, set] : std::vector<std::pair<std::string, std::string>>{{"sm", "bias=0"}, {"pcf", "kernel=5"}}) {
     const fs::path shot = dir_ / (id + "-view.png");
-    const Outcome run = view(with({"--scene", scene("wall.json").string(), "--technique", id, "--set", set, "--frames", "3",
+    const RunResult run = view(with({"--scene", scene("wall.json").string(), "--technique", id, "--set", set, "--frames", "3",
                                "--screenshot", shot.string()},
                               kCommon));
     ASSERT_EQ(run.exitCode, 0) << run.err;
@@ -190,10 +158,10 @@ TEST_F(ViewerTest, ScriptVisitingEveryTechniqueGivesCompareImages) {
   for (const auto& t : testbed::registeredTechniques())
     script += "technique " + t.info->id + "\nscreenshot " + (dir_ / ("view-" + t.info->id + ".png")).string() + "\n";
   script += "quit\n";
-  const Outcome run = view(with({"--scene", scene("wall.json").string(), "--script", writeScript(script).string()}, kCommon));
+  const RunResult run = view(with({"--scene", scene("wall.json").string(), "--script", writeScript(script).string()}, kCommon));
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const fs::path out = dir_ / "compare";
-  const Outcome compare = testbed(with({"compare", "--scene", scene("wall.json").string(), "--out", out.string()}, kCommon));
+  const RunResult compare = testbed(with({"compare", "--scene", scene("wall.json").string(), "--out", out.string()}, kCommon));
   ASSERT_EQ(compare.exitCode, 0) << compare.err;
   for (const auto& t : testbed::registeredTechniques()) {
     const std::string& id = t.info->id;
@@ -206,7 +174,7 @@ TEST_F(ViewerTest, ScriptVisitingEveryTechniqueGivesCompareImages) {
 // Switching technique and parameters by script gives what `render --set` gives.
 TEST_F(ViewerTest, ScriptSwitchingTechniqueAndParameterMatchesRender) {
   const fs::path a = dir_ / "a.png", b = dir_ / "b.png", c = dir_ / "c.png";
-  const Outcome run = view(with({"--scene", scene("wall.json").string(), "--script",
+  const RunResult run = view(with({"--scene", scene("wall.json").string(), "--script",
                              writeScript("technique pcf\nset kernel=7\nset bilinear=true\nscreenshot " + a.string() +
                                          "\ntechnique evsm\nset moments=2\nframes 2\nscreenshot " + b.string() +
                                          "\ntechnique smsr\nset max_search=4\nscreenshot " + c.string() + "\nquit\n")
@@ -223,7 +191,7 @@ TEST_F(ViewerTest, ScriptSwitchingTechniqueAndParameterMatchesRender) {
 // Moving camera and light, then saving the scene: `render` of the saved scene is the view.
 TEST_F(ViewerTest, SavedSceneRendersWhatTheMovedViewShows) {
   const fs::path shot = dir_ / "moved.png", saved = dir_ / "saved" / "moved.json";
-  const Outcome run = view(with({"--scene", scene("wall.json").string(), "--script",
+  const RunResult run = view(with({"--scene", scene("wall.json").string(), "--script",
                              writeScript("orbit 25 10\nzoom 0.8\npan 10 -5\nlight 30 -5\nsave-scene " + saved.string() +
                                          "\nscreenshot " + shot.string() + "\nquit\n")
                                  .string()},
@@ -238,7 +206,7 @@ TEST_F(ViewerTest, SavedSceneRendersWhatTheMovedViewShows) {
 // pure red/blue pixels are exactly the mismatched receivers.
 TEST_F(ViewerTest, ErrorModeAndMetricsAgreeWithCompare) {
   const fs::path heat = dir_ / "heat.png", metrics = dir_ / "metrics.json";
-  const Outcome run = view(with({"--scene", scene("wall.json").string(), "--technique", "sm", "--script",
+  const RunResult run = view(with({"--scene", scene("wall.json").string(), "--technique", "sm", "--script",
                              writeScript("mode error\nscreenshot " + heat.string() + "\nmetrics " + metrics.string() +
                                          "\nquit\n")
                                  .string()},
@@ -273,7 +241,7 @@ TEST_F(ViewerTest, ErrorModeAndMetricsAgreeWithCompare) {
 // The window: the panel at the left, the 3D view beside it showing the screenshot's bytes.
 TEST_F(ViewerTest, WindowScreenshotShowsThePanelBesideTheExactView) {
   const fs::path shot = dir_ / "view.png", window = dir_ / "window.png";
-  const Outcome run = view(with({"--scene", scene("wall.json").string(), "--technique", "smsr", "--frames", "4",
+  const RunResult run = view(with({"--scene", scene("wall.json").string(), "--technique", "smsr", "--frames", "4",
                              "--screenshot", shot.string(), "--window-screenshot", window.string()},
                             kCommon));
   ASSERT_EQ(run.exitCode, 0) << run.err;
@@ -296,7 +264,7 @@ TEST_F(ViewerTest, WindowScreenshotShowsThePanelBesideTheExactView) {
 // `render --backend glfw` (a hidden window) runs the same rasterizer as OSMesa: same T.png.
 TEST_F(ViewerTest, RenderOnTheGlfwBackendEqualsOsmesa) {
   const fs::path out = dir_ / "glfw";
-  const Outcome run = testbed(with({"render", "--scene", scene("wall.json").string(), "--technique", "pcf", "--backend",
+  const RunResult run = testbed(with({"render", "--scene", scene("wall.json").string(), "--technique", "pcf", "--backend",
                                     "glfw", "--out", out.string()},
                                    kCommon),
                               xvfb_->display());
@@ -308,7 +276,7 @@ TEST_F(ViewerTest, RenderOnTheGlfwBackendEqualsOsmesa) {
 
 TEST_F(ViewerTest, PluginTechniquesAreShownLikeInTreeOnes) {
   const fs::path shot = dir_ / "plugin.png";
-  const Outcome run = view(with({"--scene", scene("wall.json").string(), "--plugin", TESTBED_PLUGIN_EXAMPLE, "--technique",
+  const RunResult run = view(with({"--scene", scene("wall.json").string(), "--plugin", TESTBED_PLUGIN_EXAMPLE, "--technique",
                              "example-sm", "--frames", "2", "--screenshot", shot.string()},
                             kCommon));
   ASSERT_EQ(run.exitCode, 0) << run.err;
@@ -318,10 +286,9 @@ TEST_F(ViewerTest, PluginTechniquesAreShownLikeInTreeOnes) {
 // Bad input fails with exit 2 and one line before any window opens: these run without a
 // display, where opening one would fail differently (exit 1).
 TEST(ViewerBadInput, ExitsTwoWithOneLineBeforeAnyWindow) {
-  const fs::path dir = fs::temp_directory_path() / ("testbed-viewer-bad-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  std::ofstream(dir / "bad.txt") << "orbit 10 0\n\nmode sepia\n";
-  std::ofstream(dir / "set.txt") << "technique pcf\nset kernel=4\n";
+  const TempDir dir("testbed-viewer-bad");
+  writeFile(dir / "bad.txt", "orbit 10 0\n\nmode sepia\n");
+  writeFile(dir / "set.txt", "technique pcf\nset kernel=4\n");
   const std::string wall = scene("wall.json").string();
   struct Case {
     std::vector<std::string> args;
@@ -341,13 +308,12 @@ TEST(ViewerBadInput, ExitsTwoWithOneLineBeforeAnyWindow) {
       {{"--scene", wall, "--size", "12x"}, "--size"},
   };
   for (const auto& c : cases) {
-    const Outcome run = testbed(with({"view"}, c.args));
+    const RunResult run = testbed(with({"view"}, c.args));
     EXPECT_EQ(run.exitCode, 2) << c.expected << "\n" << run.err;
     EXPECT_NE(run.err.find(c.expected), std::string::npos) << run.err;
     EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
   }
   EXPECT_FALSE(fs::exists(dir / "x.png"));
-  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -8,6 +8,9 @@
 //   edt          the exact screen-space feature transform: each pixel's nearest seed
 //   penumbra     eq. 8 on the world-space distance to that seed
 //   mean-filter  the edge-aware separable mean filter (eqs. 9–10), two draws
+// EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
+// shadow mapping", Computers & Graphics 71 (2018).
+// GI 2017: Macedo & Apolinário, "Euclidean Distance Transform Shadow Mapping", Graphics Interface 2017.
 #include "techniques/distance_transform/feature_transform.h"
 #include "techniques/revectorization/revectorization_technique.h"
 #include "testbed/render/screen_pass.h"

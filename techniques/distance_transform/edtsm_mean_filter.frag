@@ -4,6 +4,8 @@
 // w_screen = w · z_screen / z_eye with z_screen = 1 / (2 tan(fov_y / 2)), a fraction of the
 // screen height), so the blur keeps its world size as the camera moves; only neighbours on
 // the same surface and facing the light take part.
+// EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
+// shadow mapping", Computers & Graphics 71 (2018).
 #include "techniques/distance_transform/edtsm_screen.glsl"
 
 uniform sampler2D uIntensity;   // (intensity, camera depth or −1)

@@ -4,6 +4,8 @@
 // penumbra size P of a seed on the same surface the intensity is 1/2 - D/P on RBSM's
 // shadowed side and 1/2 + D/P on its lit side; elsewhere (and for P = 0) RBSM's hard
 // answer stays.
+// EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
+// shadow mapping", Computers & Graphics 71 (2018).
 #include "techniques/distance_transform/edtsm_screen.glsl"
 
 uniform sampler2D uHard;          // (RBSM visibility, camera depth or −1)

@@ -1,6 +1,8 @@
 // What EDTSM's screen passes share (EDTSM* §3.3–3.4): the receiver's depth as the
 // camera's depth buffer would hold it, which decides whether two pixels lie on the same
 // surface ("edge awareness"; the paper's threshold is 2.5e-3 of that depth).
+// EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
+// shadow mapping", Computers & Graphics 71 (2018).
 //
 // The rbsm pass stores it beside the hard visibility as (v, depth), with depth −1 where
 // the later passes must not look: off the receivers, and on receivers facing away from

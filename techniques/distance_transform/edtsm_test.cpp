@@ -2,6 +2,8 @@
 // RBSM's hard shadow exactly), eq. 8's sides and range, and, against the shadow-volume
 // ground truth, that EDTSM* overestimates less than EDTSM (EDTSM*'s claim) and neither
 // leaks more than sm. Figures are printed for the closing note.
+// EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
+// shadow mapping", Computers & Graphics 71 (2018).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -25,20 +27,12 @@ class Edtsm : public ::testing::Test {
   static TechniqueRun run(FrameRunner& runner, const std::string& id, const Assignments& set = {}) {
     return test::runTechnique(runner, id, set);
   }
-  static Scene bundled(const std::string& name) {
-    return loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/" + name + ".json");
-  }
   // Small frames for the plumbing tests.
-  static RenderSettings small() {
-    RenderSettings settings;
-    settings.size = {320, 180};
-    settings.shadowMapSize = 256;
-    return settings;
-  }
+  static RenderSettings small() { return test::renderSettings({320, 180}, 256); }
 };
 
 TEST_F(Edtsm, PassesAndMemory) {
-  const Scene scene = bundled("bunny");
+  const Scene scene = test::bundledScene("bunny");
   FrameRunner runner(scene, small());
   const TechniqueRun sm = run(runner, "sm");
   for (const std::string id : {"edtsm", "edtsm-star"}) {
@@ -53,7 +47,7 @@ TEST_F(Edtsm, PassesAndMemory) {
 // Without a penumbra and a filter, EDTSM is its RBSM: edtsm = smsr, edtsm-star = smsr
 // improved, pixel for pixel.
 TEST_F(Edtsm, WithoutPenumbraItIsRbsm) {
-  const Scene scene = bundled("fence");
+  const Scene scene = test::bundledScene("fence");
   FrameRunner runner(scene, small());
   const Assignments hard{{"penumbra", "0"}, {"filter_width", "0"}};
   const ImageF conservative = run(runner, "smsr").visibility;
@@ -72,7 +66,7 @@ TEST_F(Edtsm, WithoutPenumbraItIsRbsm) {
 // Eq. 8 without the filter: RBSM's shadowed pixels get [0, 1/2], its lit ones [1/2, 1];
 // intermediate values exist; a larger P widens the penumbra.
 TEST_F(Edtsm, PenumbraSidesAndWidth) {
-  const Scene scene = bundled("wall");
+  const Scene scene = test::bundledScene("wall");
   FrameRunner runner(scene, small());
   const ImageF hard = run(runner, "smsr", {{"visibility", "improved"}}).visibility;
   int previousPenumbra = 0;
@@ -104,11 +98,8 @@ TEST_F(Edtsm, ImprovedOverestimatesLessAgainstShadowVolumes) {
   for (const std::string name : {"bunny", "wall", "fence", "dragon_sun"})
     for (const int mapSize : {256, 512}) {
       SCOPED_TRACE(name + " " + std::to_string(mapSize));
-      RenderSettings settings;
-      settings.size = {640, 360};
-      settings.shadowMapSize = mapSize;
-      const Scene scene = bundled(name);
-      FrameRunner runner(scene, settings);
+      const Scene scene = test::bundledScene(name);
+      FrameRunner runner(scene, test::renderSettings({640, 360}, mapSize));
       const ImageF truth = test::groundTruthVisibility(runner);
       std::map<std::string, std::pair<ErrorMetrics, double>> m;
       for (const std::string id : {"sm", "edtsm", "edtsm-star"}) {

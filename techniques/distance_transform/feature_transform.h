@@ -3,6 +3,8 @@
 // the integer coordinates of its nearest seed (ties broken either way), or (-1, -1) when
 // the image has no seed. EDTSM (EDTSM* §3.3) needs the seed itself, not only the
 // distance, to read that seed's world position from the G-buffer.
+// EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
+// shadow mapping", Computers & Graphics 71 (2018).
 //
 // Separable and linear time (Meijster, Roerdink & Hesselink 2000; Felzenszwalb &
 // Huttenlocher 2012): pass 1 finds, per row, the nearest seed column; pass 2 takes, per

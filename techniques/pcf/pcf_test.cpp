@@ -9,7 +9,6 @@
 #include <map>
 #include <string>
 
-#include "groundtruth/shadow_volumes.h"
 #include "testbed/harness/frame_runner.h"
 #include "testbed/core/error.h"
 #include "testbed/metrics/metrics.h"
@@ -18,23 +17,10 @@
 namespace testbed {
 namespace {
 
-using Assignments = std::map<std::string, std::string>;
+using test::bundledScene;
+using test::runTechnique;
 
-Scene bundledScene(const std::string& name) {
-  return loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/" + name + ".json");
-}
-
-TechniqueRun runTechnique(FrameRunner& runner, const std::string& id, const Assignments& set = {}) {
-  const auto& technique = findTechnique(id);
-  return runner.run(technique, resolveParameters(id, technique.info->parameters, set));
-}
-
-RenderSettings smallSettings(int shadowMapSize) {
-  RenderSettings settings;
-  settings.size = {640, 360};
-  settings.shadowMapSize = shadowMapSize;
-  return settings;
-}
+RenderSettings smallSettings(int shadowMapSize) { return test::renderSettings({640, 360}, shadowMapSize); }
 
 class PcfImage : public ::testing::Test {
  protected:
@@ -131,9 +117,7 @@ void checkAgainstGroundTruth(const std::string& name) {
   std::cout << "scene       variant       mismatch%   edge%  boundary_mean  boundary_p95   leak%    rmse\n";
   const Scene scene = bundledScene(name);
   FrameRunner runner(scene, smallSettings(2048));
-  const auto& truthTechnique = shadowVolumeGroundTruth();
-  const ImageF truth =
-      runner.run(truthTechnique, resolveParameters("groundtruth", truthTechnique.info->parameters, {})).visibility;
+  const ImageF truth = test::groundTruthVisibility(runner);
   auto measure = [&](int k, bool bilinear, const ErrorMetrics* baseline) {
     const ErrorMetrics m = computeErrorMetrics(
         runTechnique(runner, "pcf", {{"kernel", std::to_string(k)}, {"bilinear", bilinear ? "true" : "false"}})

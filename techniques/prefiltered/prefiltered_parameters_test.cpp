@@ -80,11 +80,8 @@ TEST(PrefilteredParameters, BlurWeightsAreTheBinomialGaussian) {
 
 TEST(PrefilteredParameters, MemoryIsTheMomentsTheirMipsThePingPongAndTheDepth) {
   test::sharedContext();
-  const Scene scene = loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/wall.json");
-  RenderSettings settings;
-  settings.size = {64, 36};
-  settings.shadowMapSize = 256;  // depth 16-bit by default
-  FrameRunner runner(scene, settings);
+  const Scene scene = test::bundledScene("wall");
+  FrameRunner runner(scene, test::renderSettings({64, 36}, 256));  // depth 16-bit by default
   auto bytes = [&](const std::string& id, const std::map<std::string, std::string>& raw) {
     return runner.run(findTechnique(id), resolve(id, raw)).memoryBytes;
   };
@@ -104,11 +101,8 @@ TEST(PrefilteredParameters, MemoryIsTheMomentsTheirMipsThePingPongAndTheDepth) {
 
 TEST(PrefilteredParameters, EveryTechniqueTimesItsThreePasses) {
   test::sharedContext();
-  const Scene scene = loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/wall.json");
-  RenderSettings settings;
-  settings.size = {64, 36};
-  settings.shadowMapSize = 128;
-  FrameRunner runner(scene, settings);
+  const Scene scene = test::bundledScene("wall");
+  FrameRunner runner(scene, test::renderSettings({64, 36}, 128));
   for (const char* id : kIds) {
     const TechniqueRun run = runner.run(findTechnique(id), resolve(id, {}));
     EXPECT_EQ(run.times.order, (std::vector<std::string>{"moments", "blur", "visibility"})) << id;

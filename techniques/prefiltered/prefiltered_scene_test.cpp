@@ -21,22 +21,10 @@
 namespace testbed {
 namespace {
 
-Scene bundledScene(const std::string& name) {
-  return loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/" + name + ".json");
-}
+using test::bundledScene;
+using test::runTechnique;
 
-RenderSettings testSettings() {
-  RenderSettings settings;
-  settings.size = {640, 360};
-  settings.shadowMapSize = 1024;
-  return settings;
-}
-
-TechniqueRun runTechnique(FrameRunner& runner, const std::string& id,
-                          const std::map<std::string, std::string>& parameters = {}) {
-  const auto& technique = findTechnique(id);
-  return runner.run(technique, resolveParameters(id, technique.info->parameters, parameters));
-}
+RenderSettings testSettings() { return test::renderSettings({640, 360}, 1024); }
 
 struct Figures {
   ErrorMetrics error;
@@ -89,8 +77,7 @@ TEST_F(PrefilteredScenes, StackedOccludersLeakOrderingFollowsThePapers) {
   // VSM's light bleeding (stacked_occluders.json): a far occluder's edge over a near one,
   // the receiver close behind the near one. Chebyshev's bound leaks well above 0.5 there;
   // the exponential warps (EVSM) and four moments (MSM) recover the near occluder.
-  auto f = compare(loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/stacked_occluders.json"),
-                   "stacked-occluders");
+  auto f = compare(bundledScene("stacked_occluders"), "stacked-occluders");
   const double sm = f["sm"].error.leakPct, vsm = f["vsm"].error.leakPct;
   EXPECT_GT(vsm, sm + 2.0) << "VSM should leak visibly more than plain shadow mapping";
   EXPECT_LT(f["evsm"].error.leakPct, 0.25 * vsm) << "EVSM should leak far less than VSM";

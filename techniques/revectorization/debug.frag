@@ -3,6 +3,7 @@
 // RGBA8 texture: uDebugView 1 = the compressed discontinuity d_c (r, g, b as table 1),
 // 2 = the ONDS, d_on = 1 − α per axis (x in red, y in green; blue marks a U-shape).
 // uBothSides 0 shows entering discontinuities only, as single-pass SMSR uses them.
+// GI 2016: Macedo & Apolinário, "Revectorization-Based Shadow Mapping", Graphics Interface 2016.
 #include "testbed/glsl/receiver.glsl"
 #include "techniques/revectorization/revectorization.glsl"
 

@@ -1,6 +1,8 @@
 // Revectorization-based shadow mapping (RBSM): the building blocks every technique of this
 // family shares (Macedo & Apolinário, GI 2016, §3.1; Unity listing 3 for computeRD).
 // Each technique's own visibility function lives in its own file and includes this one.
+// Unity listings: Macedo, Teixeira, Apolinário & Agüero, "Hard Shadow Anti-Aliasing for Spot
+// Lights in a Game Engine", SBGames 2017.
 //
 // Conventions:
 // - A sample is a light-space point (uv in [0,1]², light depth z). Its texel is
@@ -13,6 +15,8 @@
 // - For each axis, the traversal (computeRD) walks both directions and gives signed step
 //   counts; the ONDS of that axis is the normalized distance α ∈ [0,1] of the sample from
 //   the edge's end (the "corner" of the aliasing step). 1 − α is the paper's d_on (eq. 1).
+// EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
+// shadow mapping", Computers & Graphics 71 (2018).
 #include "testbed/glsl/shadow_test.glsl"
 
 uniform int uMaxSearch;  // the paper's L: most texels walked per direction (16)

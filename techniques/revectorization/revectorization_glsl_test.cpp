@@ -147,6 +147,8 @@ std::vector<Edge> staircases() {
 // samples are at most sm's; its line is parallel to the true one but half a texel into
 // the lit side (the overestimation EDTSM* §3.1 describes), so it misclassifies about
 // twice as many samples as the stair.
+// EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
+// shadow mapping", Computers & Graphics 71 (2018).
 TEST(RevectorizationGlsl, RevectorizedEdgeIsCloserToTheLineThanTheStair) {
   Probe& p = probe();
   const auto points = grid(6, 6, 26, 26);

@@ -11,6 +11,9 @@
 // against sm. Improved overestimates less than conservative, which overestimates more
 // than sm (both measured next to the boundary, where they differ); the filtered variants
 // add no leak except RSMSS's opened stripe tips on stacked_occluders.
+// EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
+// shadow mapping", Computers & Graphics 71 (2018).
+// GI 2016: Macedo & Apolinário, "Revectorization-Based Shadow Mapping", Graphics Interface 2016.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -60,11 +63,8 @@ TEST_F(RevectorizationScene, AgainstShadowVolumesOnTheBundledScenes) {
   for (const std::string name : {"bunny", "wall", "fence", "dragon_sun", "stacked_occluders"})
     for (const int mapSize : {256, 512}) {
       SCOPED_TRACE(name + " " + std::to_string(mapSize));
-      const Scene scene = loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/" + name + ".json");
-      RenderSettings settings;
-      settings.size = {640, 360};
-      settings.shadowMapSize = mapSize;
-      FrameRunner runner(scene, settings);
+      const Scene scene = test::bundledScene(name);
+      FrameRunner runner(scene, test::renderSettings({640, 360}, mapSize));
       const ImageF truth = test::groundTruthVisibility(runner);
       auto run = [&](const std::string& id, const Assignments& set, const std::string& label) {
         return measure(runner, truth, id, set, label, name, mapSize);
@@ -105,11 +105,8 @@ TEST_F(RevectorizationScene, AgainstShadowVolumesOnTheBundledScenes) {
 
 // The same frame through the real screen passes: kernel 1 is the base technique exactly.
 TEST_F(RevectorizationScene, RpcfKernelOneEqualsItsBaseOnAScene) {
-  const Scene scene = loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/bunny.json");
-  RenderSettings settings;
-  settings.size = {320, 180};
-  settings.shadowMapSize = 256;
-  FrameRunner runner(scene, settings);
+  const Scene scene = test::bundledScene("bunny");
+  FrameRunner runner(scene, test::renderSettings({320, 180}, 256));
   auto visibility = [&](const std::string& id, const Assignments& set) {
     return test::runTechnique(runner, id, set).visibility;
   };
@@ -127,11 +124,8 @@ TEST_F(RevectorizationScene, RpcfKernelOneEqualsItsBaseOnAScene) {
 // some coloured (edge) pixels; not asked for, there are none. smsr-2pass shows its own
 // screen-space map, which on lit receivers holds the same d_c as smsr's light-space view.
 TEST_F(RevectorizationScene, DebugViewsAreReturnedOnlyWhenAsked) {
-  const Scene scene = loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/bunny.json");
-  RenderSettings settings;
-  settings.size = {320, 180};
-  settings.shadowMapSize = 256;
-  FrameRunner runner(scene, settings);
+  const Scene scene = test::bundledScene("bunny");
+  FrameRunner runner(scene, test::renderSettings({320, 180}, 256));
   std::map<std::string, ImageF> views;
   for (const std::string id : {"smsr", "smsr-2pass"}) {
     SCOPED_TRACE(id);

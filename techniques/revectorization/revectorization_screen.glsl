@@ -13,6 +13,7 @@
 // full visibility on the marked pixels only, which the early depth test finds before the
 // shader runs. Only texels on a discontinuity are traversed (GI 2016 §3.2), so most pixels
 // never pay for a traversal.
+// GI 2016: Macedo & Apolinário, "Revectorization-Based Shadow Mapping", Graphics Interface 2016.
 #include "testbed/glsl/receiver.glsl"
 
 #ifndef RV_SCREEN_OUTPUT

@@ -16,6 +16,8 @@ namespace testbed::revectorization {
 // max_search, epsilon, bias, debug (the family's common parameters).
 std::vector<ParameterSpec> commonParameters();
 // `visibility` of smsr and rpcf-smsr: conservative (EDTSM* eq. 4) or improved (eq. 7).
+// EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
+// shadow mapping", Computers & Graphics 71 (2018).
 ParameterSpec visibilityParameter();
 // `kernel` of the RPCF variants.
 ParameterSpec kernelParameter();

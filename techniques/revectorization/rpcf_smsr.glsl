@@ -2,6 +2,7 @@
 // revectorized with the SMSR visibility. Eq. 2's shortcuts (0 where s = 0, 1 where d_c = 0)
 // are what smsrVisibility does before any traversal. Samples move by whole texels, so
 // each keeps the receiver's sub-texel position p and depth; kernel 1 is SMSR exactly.
+// GI 2016: Macedo & Apolinário, "Revectorization-Based Shadow Mapping", Graphics Interface 2016.
 #include "techniques/revectorization/smsr.glsl"
 #include "techniques/revectorization/rpcf.glsl"
 

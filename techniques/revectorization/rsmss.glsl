@@ -12,6 +12,9 @@
 // isolated texel) takes the other side's value. On the edge between a lit and a shadowed
 // run of an ideal staircase the two sides give the same value, so the result is
 // continuous across it.
+// EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
+// shadow mapping", Computers & Graphics 71 (2018).
+// GI 2016: Macedo & Apolinário, "Revectorization-Based Shadow Mapping", Graphics Interface 2016.
 #include "techniques/revectorization/revectorization.glsl"
 
 float rsmssSigned(RvAxis a) {

@@ -2,6 +2,8 @@
 // §3.2). One screen pass finds the lit texels next to shadow, measures their edge in
 // light space and clips the oriented normalized discontinuity space with the conservative
 // (EDTSM* eq. 4) or improved (EDTSM* eq. 7) visibility function; see smsr.glsl.
+// EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
+// shadow mapping", Computers & Graphics 71 (2018).
 #include "techniques/revectorization/revectorization_technique.h"
 #include "testbed/technique/registry.h"
 

@@ -8,6 +8,9 @@
 // §3.1), from the traversals along the map's x and y axes. For a texel next to a straight
 // stretch of an edge, the traversal across the edge ends at once (L = 1) and its α is the
 // sample's sub-texel distance from the edge; along the edge it is the position in the run.
+// EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
+// shadow mapping", Computers & Graphics 71 (2018).
+// GI 2016: Macedo & Apolinário, "Revectorization-Based Shadow Mapping", Graphics Interface 2016.
 //
 // The 12 configurations of v_SMSR are in the paper's supplementary material, which we do
 // not have. Our reading, from the paper's text (§3.2) and EDTSM* §3.1:

@@ -9,6 +9,7 @@
 // screen pass (edge_split_pass.h). The maps' memory is booked by the GL wrappers. Its debug views are
 // its own: debug=discontinuity writes the screen-space map pass 2 searches (rg = d_c,
 // b = 1 − s), debug=onds what that search measured.
+// GI 2016: Macedo & Apolinário, "Revectorization-Based Shadow Mapping", Graphics Interface 2016.
 #include "techniques/revectorization/revectorization_technique.h"
 #include "testbed/render/gbuffer_pass.h"
 #include "testbed/render/gpu_scene.h"

@@ -4,6 +4,7 @@
 // a = 1 on receivers. Drawn over the scene's geometry from the camera (gbuffer.vert), so
 // the receiver's position is this rasterization's; its normal is the G-buffer's, the very
 // one every technique's facing rule reads.
+// Bondarev, "Shadow Map Silhouette Revectorization", poster, I3D 2014.
 #include "testbed/glsl/receiver.glsl"
 #include "techniques/revectorization/revectorization.glsl"
 

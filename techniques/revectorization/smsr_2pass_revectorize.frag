@@ -5,6 +5,10 @@
 // (GI 2016 §4.1 says so), and the conservative one is its single-pass successor. Drawn as
 // the family's screen pass (revectorization_screen.glsl): pixels without an entering
 // discontinuity in pass 1's map keep their shadow test, the others are searched.
+// EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
+// shadow mapping", Computers & Graphics 71 (2018).
+// GI 2016: Macedo & Apolinário, "Revectorization-Based Shadow Mapping", Graphics Interface 2016.
+// Bondarev, "Shadow Map Silhouette Revectorization", poster, I3D 2014.
 #include "techniques/revectorization/smsr_2pass_search.glsl"
 #include "techniques/revectorization/smsr.glsl"
 

@@ -6,6 +6,7 @@
 // shadowed receiver; it stops without an end off the receivers, on a lit pixel sharing
 // no discontinuity direction, or after max_search steps. Shared by the timed pass and the
 // ONDS debug view so the view shows exactly what the pass clips.
+// Bondarev, "Shadow Map Silhouette Revectorization", poster, I3D 2014.
 #include "testbed/glsl/receiver.glsl"
 #include "techniques/revectorization/revectorization.glsl"
 

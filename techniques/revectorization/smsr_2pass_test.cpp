@@ -17,11 +17,8 @@ TEST(SmsrTwoPass, PassesMemoryAndErrorAgainstSinglePass) {
   test::sharedContext();
   for (const int mapSize : {256, 512}) {
     SCOPED_TRACE(mapSize);
-    const Scene scene = loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/bunny.json");
-    RenderSettings settings;
-    settings.size = {640, 360};
-    settings.shadowMapSize = mapSize;
-    FrameRunner runner(scene, settings);
+    const Scene scene = test::bundledScene("bunny");
+    FrameRunner runner(scene, test::renderSettings({640, 360}, mapSize));
     const ImageF truth = test::groundTruthVisibility(runner);
     auto run = [&](const std::string& id) { return test::runTechnique(runner, id); };
     const TechniqueRun sm = run("sm"), single = run("smsr"), two = run("smsr-2pass");

@@ -4,6 +4,7 @@
 // faces (open meshes: planes, holes). The facing rule is the shadow-volume
 // ground truth's: a face faces the light when dot(normal, towards
 // light) > 0, so edge-on faces count as facing away, and degenerate faces face neither.
+// Chan's notes: Eric Chan (MIT), "Shadow Silhouette Maps", course notes on Sen et al.'s maps.
 #include <vector>
 
 #include <glm/glm.hpp>

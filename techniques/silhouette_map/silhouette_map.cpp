@@ -3,6 +3,7 @@
 // ("silhouette-map": CPU silhouette extraction, upload, conservative edge rasterization)
 // and the final screen pass, drawn edge-split ("visibility" for every pixel, then
 // "silhouette-pixels" where the corner tests disagree).
+// Chan's notes: Eric Chan (MIT), "Shadow Silhouette Maps", course notes on Sen et al.'s maps.
 #include <array>
 #include <vector>
 

@@ -1,4 +1,6 @@
 // Shadow silhouette maps (Sen et al. 2003; Chan's notes), the two per-texel rules.
+// Sen, Cammarano & Hanrahan, "Shadow Silhouette Maps", ACM TOG 22(3) (SIGGRAPH 2003).
+// Chan's notes: Eric Chan (MIT), "Shadow Silhouette Maps", course notes on Sen et al.'s maps.
 //
 // Coordinates: w = shadow-map uv · N + 0.5 ("silhouette space"). Silhouette texel p covers
 // [p, p + 1]², so its corners sit on the depth samples (depth texel k's centre is at

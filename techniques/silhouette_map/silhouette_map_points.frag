@@ -2,6 +2,7 @@
 // One silhouette point per texel (Chan's notes): pick it by the diagonal rules, drop edges
 // the light does not see (behind all four corner depth samples), write the point as an
 // offset in [0,1]² of the texel. Later edges overwrite earlier ones, as in the paper.
+// Chan's notes: Eric Chan (MIT), "Shadow Silhouette Maps", course notes on Sen et al.'s maps.
 #include "testbed/glsl/shadow_test.glsl"
 #include "techniques/silhouette_map/silhouette_map.glsl"
 

@@ -33,10 +33,7 @@ TechniqueRun runDefault(FrameRunner& runner, const std::string& id) { return tes
 Compared compare(const Scene& scene, int mapSize, const std::string& label,
                  const std::map<std::string, std::string>& silhouetteSet = {}) {
   test::sharedContext();
-  RenderSettings settings;
-  settings.size = {640, 360};
-  settings.shadowMapSize = mapSize;
-  FrameRunner runner(scene, settings);
+  FrameRunner runner(scene, test::renderSettings({640, 360}, mapSize));
   const ImageF truth = test::groundTruthVisibility(runner);
   Compared c{runDefault(runner, "sm"), test::runTechnique(runner, "silhouette-map", silhouetteSet), {}, {}};
   c.smError = computeErrorMetrics(c.sm.visibility, truth);
@@ -100,10 +97,7 @@ TEST(SilhouetteMapScene, SlantedSquareBoundaryFarCloserThanSm) {
 TEST(SilhouetteMapScene, PassesAndMemory) {
   test::sharedContext();
   const Scene scene = test::boxOverPlane(test::directional({0.3f, -1, 0.2f}));
-  RenderSettings settings;
-  settings.size = {320, 180};
-  settings.shadowMapSize = 256;
-  FrameRunner runner(scene, settings);
+  FrameRunner runner(scene, test::renderSettings({320, 180}, 256));
   const TechniqueRun run = runDefault(runner, "silhouette-map");
   EXPECT_EQ(run.times.order, (std::vector<std::string>{"shadow-map", "silhouette-map", "visibility", "silhouette-pixels"}));
   std::vector<glm::vec4> endpoints;
@@ -125,7 +119,7 @@ TEST(SilhouetteMapScene, PassesAndMemory) {
 TEST(SilhouetteMapScene, BundledScenesAgainstSm) {
   printHeader();
   for (const std::string name : {"bunny", "wall", "fence", "dragon_sun", "stacked_occluders"}) {
-    const Scene scene = loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/" + name + ".json");
+    const Scene scene = test::bundledScene(name);
     for (const int mapSize : {256, 512}) {
       SCOPED_TRACE(name + " " + std::to_string(mapSize));
       const Compared c = compare(scene, mapSize, name);
@@ -153,12 +147,9 @@ TEST(SilhouetteMapScene, BundledScenesAgainstSm) {
 // vertex, where one stored point cannot describe both.
 TEST(SilhouetteMapScene, DragonErrorsLieWhereEdgesShareATexel) {
   test::sharedContext();
-  const Scene scene = loadScene(std::string(TESTBED_SOURCE_DIR) + "/scenes/dragon_sun.json");
+  const Scene scene = test::bundledScene("dragon_sun");
   const int n = 256;
-  RenderSettings settings;
-  settings.size = {640, 360};
-  settings.shadowMapSize = n;
-  FrameRunner runner(scene, settings);
+  FrameRunner runner(scene, test::renderSettings({640, 360}, n));
   const ImageF truth = test::groundTruthVisibility(runner);
   const ImageF sm = runDefault(runner, "sm").visibility, sil = runDefault(runner, "silhouette-map").visibility;
 

@@ -4,6 +4,7 @@
 // answer, else the skewed quadrant of the five silhouette points picks the corner whose
 // test decides. Drawn edge-split (revectorization_screen.glsl): a draw of every pixel
 // answers where the corners agree, the silhouette pixels alone read the silhouette map.
+// Sen, Cammarano & Hanrahan, "Shadow Silhouette Maps", ACM TOG 22(3) (SIGGRAPH 2003).
 #include "testbed/glsl/receiver.glsl"
 #include "testbed/glsl/shadow_test.glsl"
 #include "techniques/silhouette_map/silhouette_map.glsl"

@@ -5,14 +5,10 @@
 #include <cmath>
 #include <limits>
 
+#include "tests/cli_helpers.h"
+
 namespace testbed {
 namespace {
-
-std::filesystem::path tempDir(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("testbed_image_io_" + name + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  return dir;
-}
 
 ImageF gradient(int channels) {
   ImageF image{7, 5, channels, {}};
@@ -21,8 +17,7 @@ ImageF gradient(int channels) {
 }
 
 TEST(ImageIo, ExrRoundTripIsExactAndKeepsNaN) {
-  const auto dir = tempDir("exr");
-  std::filesystem::create_directories(dir);
+  const test::TempDir dir("testbed-image-io");
   ImageF image = gradient(1);
   image.pixels[3] = std::numeric_limits<float>::quiet_NaN();
   image.pixels[4] = 0.123456789f;
@@ -35,18 +30,15 @@ TEST(ImageIo, ExrRoundTripIsExactAndKeepsNaN) {
     if (std::isnan(image.pixels[i])) EXPECT_TRUE(std::isnan(back.pixels[i]));
     else EXPECT_EQ(back.pixels[i], image.pixels[i]) << i;
   }
-  std::filesystem::remove_all(dir);
 }
 
 TEST(ImageIo, PngRoundTripWithinOneStep) {
-  const auto dir = tempDir("png");
-  std::filesystem::create_directories(dir);
+  const test::TempDir dir("testbed-image-io");
   const ImageF image = gradient(3);
   writeImage(dir / "c.png", image);
   const ImageF back = readImage(dir / "c.png");
   ASSERT_EQ(back.channels, 3);
   for (std::size_t i = 0; i < image.pixels.size(); ++i) EXPECT_NEAR(back.pixels[i], image.pixels[i], 0.5 / 255 + 1e-6);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(ImageIo, UnreadableFilesThrowNamingThem) {

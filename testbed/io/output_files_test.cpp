@@ -3,134 +3,108 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <algorithm>
-#include <fstream>
-#include <sstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "testbed/core/error.h"
+#include "tests/cli_helpers.h"
 
 namespace testbed {
 namespace {
 
 namespace fs = std::filesystem;
-
-// A fresh folder under the temp folder, removed afterwards.
-struct Scratch {
-  fs::path path = fs::temp_directory_path() / ("testbed_output_files_" + std::to_string(::getpid()) + "_" +
-                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  Scratch() {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~Scratch() { fs::remove_all(path); }
-};
-
-std::string contents(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-void put(const fs::path& file, const std::string& text) { std::ofstream(file, std::ios::binary) << text; }
-
-std::vector<std::string> entries(const fs::path& dir) {
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
+using namespace testbed::test;
 
 TEST(OutputFiles, AppearOnlyOnCommitAndAnAbandonedSetRemovesTheFolderItMade) {
-  Scratch tmp;
-  const fs::path dir = tmp.path / "a" / "b";
+  const TempDir tmp("testbed-output-files");
+  const fs::path dir = tmp.path() / "a" / "b";
   {
     OutputFiles files(dir);
     EXPECT_TRUE(fs::is_directory(dir)) << "the folder is checked by making it, before any rendering";
     files.writeText("a.json", "{}\n");
     EXPECT_FALSE(fs::exists(dir / "a.json"));
   }
-  EXPECT_FALSE(fs::exists(tmp.path / "a")) << "both folders it made are gone";
+  EXPECT_FALSE(fs::exists(tmp.path() / "a")) << "both folders it made are gone";
   {
     OutputFiles files(dir);
     files.writeText("b.json", "{}\n");
     files.commit();
   }
-  EXPECT_EQ(entries(dir), std::vector<std::string>{"b.json"});
+  EXPECT_EQ(filesIn(dir), std::vector<std::string>{"b.json"});
 }
 
 TEST(OutputFiles, ReplacesRegularFilesAndLeavesTheUsersOtherFilesAlone) {
-  Scratch tmp;
-  put(tmp.path / "sm.json", "old\n");
-  put(tmp.path / "sm.json.previous", "the user's own\n");
-  put(tmp.path / "sm.json.partial", "the user's too\n");
-  OutputFiles files(tmp.path);
+  const TempDir tmp("testbed-output-files");
+  writeFile(tmp.path() / "sm.json", "old\n");
+  writeFile(tmp.path() / "sm.json.previous", "the user's own\n");
+  writeFile(tmp.path() / "sm.json.partial", "the user's too\n");
+  OutputFiles files(tmp.path());
   files.writeText("sm.json", "new\n");
   files.commit();
-  EXPECT_EQ(contents(tmp.path / "sm.json"), "new\n");
-  EXPECT_EQ(contents(tmp.path / "sm.json.previous"), "the user's own\n");
-  EXPECT_EQ(contents(tmp.path / "sm.json.partial"), "the user's too\n");
-  EXPECT_EQ(entries(tmp.path), (std::vector<std::string>{"sm.json", "sm.json.partial", "sm.json.previous"}));
+  EXPECT_EQ(readFile(tmp.path() / "sm.json"), "new\n");
+  EXPECT_EQ(readFile(tmp.path() / "sm.json.previous"), "the user's own\n");
+  EXPECT_EQ(readFile(tmp.path() / "sm.json.partial"), "the user's too\n");
+  EXPECT_EQ(filesIn(tmp.path()), (std::vector<std::string>{"sm.json", "sm.json.partial", "sm.json.previous"}));
 }
 
 TEST(OutputFiles, NeverReplacesOrWritesThroughALinkAFifoOrAFolder) {
-  Scratch tmp;
-  put(tmp.path / "victim", "precious\n");
-  fs::create_symlink(tmp.path / "victim", tmp.path / "link.json");
-  ASSERT_EQ(::mkfifo((tmp.path / "fifo.json").c_str(), 0600), 0);
-  fs::create_directory(tmp.path / "folder.json");
+  const TempDir tmp("testbed-output-files");
+  writeFile(tmp.path() / "victim", "precious\n");
+  fs::create_symlink(tmp.path() / "victim", tmp.path() / "link.json");
+  ASSERT_EQ(::mkfifo((tmp.path() / "fifo.json").c_str(), 0600), 0);
+  fs::create_directory(tmp.path() / "folder.json");
   for (const char* name : {"link.json", "fifo.json", "folder.json"}) {
     SCOPED_TRACE(name);
-    OutputFiles files(tmp.path);
+    OutputFiles files(tmp.path());
     EXPECT_THROW(files.claim(name), InputError);
     EXPECT_THROW(files.writeText(name, "new\n"), InputError);
   }
-  EXPECT_EQ(contents(tmp.path / "victim"), "precious\n");
-  EXPECT_TRUE(fs::is_symlink(tmp.path / "link.json"));
-  EXPECT_TRUE(fs::is_fifo(tmp.path / "fifo.json"));
+  EXPECT_EQ(readFile(tmp.path() / "victim"), "precious\n");
+  EXPECT_TRUE(fs::is_symlink(tmp.path() / "link.json"));
+  EXPECT_TRUE(fs::is_fifo(tmp.path() / "fifo.json"));
   // A name taken after the writes is refused at commit, with nothing of the set placed.
-  put(tmp.path / "a.json", "old a\n");
+  writeFile(tmp.path() / "a.json", "old a\n");
   {
-    OutputFiles files(tmp.path);
+    OutputFiles files(tmp.path());
     files.writeText("a.json", "new a\n");
     files.writeText("b.json", "new b\n");
-    fs::create_symlink(tmp.path / "victim", tmp.path / "b.json");
+    fs::create_symlink(tmp.path() / "victim", tmp.path() / "b.json");
     EXPECT_THROW(files.commit(), InputError);
   }
-  EXPECT_EQ(contents(tmp.path / "a.json"), "old a\n");
-  EXPECT_EQ(contents(tmp.path / "victim"), "precious\n");
-  EXPECT_TRUE(fs::is_symlink(tmp.path / "b.json"));
+  EXPECT_EQ(readFile(tmp.path() / "a.json"), "old a\n");
+  EXPECT_EQ(readFile(tmp.path() / "victim"), "precious\n");
+  EXPECT_TRUE(fs::is_symlink(tmp.path() / "b.json"));
 }
 
 TEST(OutputFiles, BadFoldersAreInputErrorsBeforeAnythingIsWritten) {
-  Scratch tmp;
-  put(tmp.path / "file", "x\n");
-  for (const fs::path& bad : {fs::path(""), tmp.path / "file", tmp.path / "file" / "under",
-                              tmp.path / std::string(300, 'n'), fs::path("/proc/testbed-no-such")}) {
+  const TempDir tmp("testbed-output-files");
+  writeFile(tmp.path() / "file", "x\n");
+  for (const fs::path& bad : {fs::path(""), tmp.path() / "file", tmp.path() / "file" / "under",
+                              tmp.path() / std::string(300, 'n'), fs::path("/proc/testbed-no-such")}) {
     SCOPED_TRACE(bad.string());
     EXPECT_THROW(OutputFiles files(bad), InputError);
   }
-  EXPECT_EQ(entries(tmp.path), std::vector<std::string>{"file"});
-  OutputFiles files(tmp.path);
+  EXPECT_EQ(filesIn(tmp.path()), std::vector<std::string>{"file"});
+  OutputFiles files(tmp.path());
   EXPECT_THROW(files.claim(std::string(300, 'f')), InputError);
   EXPECT_THROW(files.claim("../escape"), InputError);
 }
 
 TEST(OutputFiles, StagingIsAPrivateHiddenFolderRemovedAfterwards) {
-  Scratch tmp;
+  const TempDir tmp("testbed-output-files");
   {
-    OutputFiles files(tmp.path);
+    OutputFiles files(tmp.path());
     files.writeText("x.json", "{}\n");
-    const auto names = entries(tmp.path);
+    const auto names = filesIn(tmp.path());
     ASSERT_EQ(names.size(), 1u);
     EXPECT_EQ(names[0].rfind(".testbed-staging-", 0), 0u) << names[0];
     struct stat info {};
-    ASSERT_EQ(::stat((tmp.path / names[0]).c_str(), &info), 0);
+    ASSERT_EQ(::stat((tmp.path() / names[0]).c_str(), &info), 0);
     EXPECT_EQ(info.st_mode & 0777, 0700u);
   }
-  EXPECT_TRUE(entries(tmp.path).empty());
+  EXPECT_TRUE(filesIn(tmp.path()).empty());
 }
 
 }  // namespace

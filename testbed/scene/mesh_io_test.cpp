@@ -4,15 +4,14 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <limits>
-#include <random>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "testbed/core/error.h"
 #include "testbed/scene/scene.h"
+#include "tests/cli_helpers.h"
 
 namespace testbed {
 namespace {
@@ -21,34 +20,21 @@ namespace fs = std::filesystem;
 
 class MeshIo : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("testbed_mesh_io_" + std::to_string(std::random_device{}()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   fs::path write(const std::string& name, const std::string& content) const {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << content;
-    return path;
+    return test::writeFile(dir_ / name, content);
   }
 
   // Expects readMeshFile to throw an InputError that names the file and mentions `problem`.
   static void expectError(const fs::path& file, const std::string& problem) {
-    try {
-      readMeshFile(file);
-      ADD_FAILURE() << file << ": expected an InputError";
-    } catch (const InputError& e) {
-      const std::string message = e.what();
-      EXPECT_EQ(message.rfind(file.string() + ": ", 0), 0u) << message;
-      EXPECT_NE(message.find(problem), std::string::npos) << message;
-      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    SCOPED_TRACE(file.string());
+    if (const auto message = test::inputErrorOf([&] { readMeshFile(file); })) {
+      EXPECT_EQ(message->rfind(file.string() + ": ", 0), 0u) << *message;
+      EXPECT_NE(message->find(problem), std::string::npos) << *message;
+      EXPECT_EQ(message->find('\n'), std::string::npos) << *message;
     }
   }
 
-  fs::path dir_;
+  test::TempDir dir_{"testbed-mesh-io"};
 };
 
 void expectUnitNormals(const TriMesh& mesh) {

@@ -4,10 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <optional>
-#include <random>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -15,6 +13,7 @@
 
 #include "testbed/core/error.h"
 #include "testbed/scene/scene.h"
+#include "tests/cli_helpers.h"
 
 namespace testbed {
 namespace {
@@ -82,18 +81,8 @@ class ScopedEnv {
 
 class SceneParser : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("testbed_scene_" + std::to_string(std::random_device{}()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
+    return test::writeFile(dir_ / name, text);
   }
   fs::path writeScene(const std::string& name, const json& scene) const {
     return write(name, scene.dump(2));
@@ -121,7 +110,7 @@ class SceneParser : public ::testing::Test {
     expectError(writeScene("bad.json", scene), key, problem);
   }
 
-  fs::path dir_;
+  test::TempDir dir_{"testbed-scene"};
 };
 
 TEST_F(SceneParser, GoodSceneParsesWithValuesAndDefaults) {
@@ -241,8 +230,7 @@ TEST_F(SceneParser, SubdividedPrimitiveStaysClosed) {
 
 TEST_F(SceneParser, AssetNamesComeFromTheAssetDirectory) {
   const fs::path assets = dir_ / "assets";
-  fs::create_directories(assets);
-  std::ofstream(assets / "tet.off") << kTetrahedronOff;
+  test::writeFile(assets / "tet.off", kTetrahedronOff);
   const ScopedEnv env("TESTBED_ASSET_DIR", assets.string());
   EXPECT_EQ(assetDirectory(), assets);
   json scene = goodScene();

@@ -1,6 +1,7 @@
 #pragma once
 // The papers' close-up figures (GI 2016 Figures 6-8): every technique shown on the same
 // window of the same frame, beside the ground truth and an overview marking the window.
+// GI 2016: Macedo & Apolinário, "Revectorization-Based Shadow Mapping", Graphics Interface 2016.
 #include <array>
 #include <optional>
 #include <string>

@@ -211,11 +211,14 @@ TEST(SweepPaperSpecs, EachTableHasThePapersShape) {
     std::size_t rows, columns;
   };
   const std::vector<Shape> shapes = {
+      // GI 2016: Macedo & Apolinário, "Revectorization-Based Shadow Mapping", Graphics Interface 2016.
       {"gi2016-table2", 4, 4},       // Macedo & Apolinário, GI 2016, Table 2: 4 techniques × 512²..4096²
       {"gi2016-table3", 4, 3},       // Table 3: × SD, HD, Full HD
       {"gi2016-table4", 4, 3},       // Table 4: × 15 000, 100 000, 750 000 polygons
       {"gi2016-table5", 14, 4},      // Table 5: 6 + 4 + 4 rows (3×3, 10×10, 17×17) × 512²..4096²
       {"gi2016-figure9", 11, 4},     // Figure 9: memory per technique × 512²..4096²
+      // EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
+      // shadow mapping", Computers & Graphics 71 (2018).
       {"edtsm-star-table1", 18, 4},  // EDTSM* Table 1: 3 scenes × 6 methods × 512²..4096²
       {"edtsm-star-table2", 18, 3},  // Table 2: × 480p, 720p, 1080p
       {"edtsm-star-table3", 18, 4},  // Table 3: × kernel 7², 15², 23², 31²

@@ -8,6 +8,7 @@
 
 #include "testbed/core/error.h"
 #include "testbed/viewer/navigation.h"
+#include "tests/cli_helpers.h"
 
 namespace testbed::viewer {
 namespace {
@@ -17,19 +18,16 @@ namespace fs = std::filesystem;
 class ViewerSceneWriter : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("testbed-scene-writer-" + std::to_string(::getpid()));
-    fs::create_directories(dir_ / "scenes" / "meshes");
-    std::ofstream(dir_ / "scenes" / "meshes" / "tet.off") << "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
-                                                             "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
-    std::ofstream(dir_ / "scenes" / "s.json") << R"({
+    test::writeFile(dir_ / "scenes" / "meshes" / "tet.off",
+                    "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+    test::writeFile(dir_ / "scenes" / "s.json", R"({
   "name": "writer", "comment": "kept",
   "camera": {"eye": [0, 10, -30], "target": [0, 0, 0], "fov_y": 40},
   "light": {"type": "spot", "eye": [0, 40, 10], "target": [0, 0, 0], "near": 5, "far": 90},
   "objects": [{"mesh": "meshes/tet.off", "fit": 4}, {"primitive": "plane", "size": [20, 20]}]
-})";
+})");
   }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  test::TempDir dir_{"testbed-scene-writer"};
 };
 
 // What the button writes loads back, through the CLI's parser, with the moved camera and
