@@ -3,6 +3,9 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <utility>
+
+#include <gtest/gtest.h>
 
 #include "groundtruth/shadow_volumes.h"
 
@@ -33,6 +36,15 @@ TechniqueRun runTechnique(FrameRunner& runner, const std::string& id,
 ImageF groundTruthVisibility(FrameRunner& runner) {
   const auto& truth = shadowVolumeGroundTruth();
   return runner.run(truth, resolveParameters("groundtruth", truth.info->parameters, {})).visibility;
+}
+
+void expectNoError(const ErrorMetrics& m) {
+  const std::pair<const char*, double> errors[] = {
+      {"mismatch_pct", m.mismatchPct}, {"edge_mismatch_pct", m.edgeMismatchPct},
+      {"rmse", m.rmse},                {"leak_pct", m.leakPct},
+      {"overestimation_pct", m.overestimationPct}, {"boundary_px.mean", m.boundaryMean},
+      {"boundary_px.p95", m.boundaryP95}};
+  for (const auto& [name, value] : errors) EXPECT_EQ(value, 0) << name;
 }
 
 Receivers receiversOf(const ImageF& visibility) {

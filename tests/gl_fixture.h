@@ -6,6 +6,7 @@
 
 #include "testbed/harness/frame_runner.h"
 #include "testbed/gl/context.h"
+#include "testbed/metrics/metrics.h"
 
 namespace testbed::test {
 
@@ -28,6 +29,9 @@ struct Receivers {
   int count = 0, fullyShadowed = 0, dark = 0;
 };
 Receivers receiversOf(const ImageF& visibility);
+
+// Expects every error metric of `m` to be 0: what a visibility compared with itself gives.
+void expectNoError(const ErrorMetrics& m);
 
 // A parameterized test's case name from a readable label ("spot-near10" → "spot_near10"):
 // GoogleTest allows only letters, digits and underscores.

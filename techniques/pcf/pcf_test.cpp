@@ -47,59 +47,55 @@ TEST_F(PcfImage, KernelOneEqualsShadowMappingPixelForPixel) {
   }
 }
 
-// Values are in [0, 1], defined on every receiver, and for the box filter a whole number
-// of lit taps over k²; some are strictly between 0 and 1 (it does filter).
-TEST_F(PcfImage, BoxFilterValuesAreMultiplesOfOneOverKSquared) {
-  const Scene scene = bundledScene("wall");
-  FrameRunner runner(scene, smallSettings(512));
+// What pcf with a k×k kernel gives on one frame, counted: background pixels that are not
+// NaN; receivers that are NaN, outside [0, 1], off the box filter's grid (a whole number
+// of lit taps over k²), or strictly between 0 and 1.
+struct PcfValues {
+  int notNanBackground = 0, nanOnReceiver = 0, outOfRange = 0, offGrid = 0, partial = 0;
+};
+
+PcfValues pcfValues(FrameRunner& runner, int k, bool bilinear) {
   const ImageF& positions = runner.positions();
-  for (const int k : {3, 5}) {
-    SCOPED_TRACE("kernel " + std::to_string(k));
-    const ImageF v = runTechnique(runner, "pcf", {{"kernel", std::to_string(k)}}).visibility;
-    int partial = 0, offGrid = 0, outOfRange = 0, nanOnReceiver = 0;
-    for (int y = 0; y < v.height; ++y)
-      for (int x = 0; x < v.width; ++x) {
-        const bool receiver = positions.at(x, y, 3) > 0.5f;
-        const float value = v.at(x, y);
-        if (!receiver) {
-          EXPECT_TRUE(std::isnan(value)) << "background pixel " << x << "," << y;
-          continue;
-        }
-        if (std::isnan(value)) {
-          ++nanOnReceiver;
-          continue;
-        }
-        outOfRange += value < 0.0f || value > 1.0f;
-        const float taps = value * float(k * k);
-        offGrid += std::abs(taps - std::round(taps)) > 1e-3f;
-        partial += value > 0.0f && value < 1.0f;
+  const ImageF v =
+      runTechnique(runner, "pcf", {{"kernel", std::to_string(k)}, {"bilinear", bilinear ? "true" : "false"}}).visibility;
+  PcfValues counts;
+  for (int y = 0; y < v.height; ++y)
+    for (int x = 0; x < v.width; ++x) {
+      const float value = v.at(x, y);
+      if (positions.at(x, y, 3) <= 0.5f) {
+        counts.notNanBackground += !std::isnan(value);
+        continue;
       }
-    EXPECT_EQ(nanOnReceiver, 0);
-    EXPECT_EQ(outOfRange, 0);
-    EXPECT_EQ(offGrid, 0);
-    EXPECT_GT(partial, 100);
-  }
+      if (std::isnan(value)) {
+        ++counts.nanOnReceiver;
+        continue;
+      }
+      counts.outOfRange += value < 0.0f || value > 1.0f;
+      const float taps = value * float(k * k);
+      counts.offGrid += std::abs(taps - std::round(taps)) > 1e-3f;
+      counts.partial += value > 0.0f && value < 1.0f;
+    }
+  return counts;
 }
 
-// Bilinear taps give continuous values, still in [0, 1] and defined on every receiver.
-TEST_F(PcfImage, BilinearValuesAreInTheUnitInterval) {
+// Values are in [0, 1] and defined on every receiver. The box filter's are a whole number
+// of lit taps over k², some strictly between 0 and 1 (it does filter); bilinear taps give
+// continuous values, off that grid.
+TEST_F(PcfImage, ValuesAreInTheUnitIntervalAndTheBoxFilterCountsLitTaps) {
   const Scene scene = bundledScene("wall");
   FrameRunner runner(scene, smallSettings(512));
-  const ImageF& positions = runner.positions();
-  for (const int k : {1, 3}) {
-    SCOPED_TRACE("kernel " + std::to_string(k));
-    const ImageF v = runTechnique(runner, "pcf", {{"kernel", std::to_string(k)}, {"bilinear", "true"}}).visibility;
-    int bad = 0, offGrid = 0;
-    for (int y = 0; y < v.height; ++y)
-      for (int x = 0; x < v.width; ++x) {
-        if (positions.at(x, y, 3) <= 0.5f) continue;
-        const float value = v.at(x, y);
-        bad += !(value >= 0.0f && value <= 1.0f);  // NaN counts as bad
-        const float taps = value * float(k * k);
-        offGrid += std::abs(taps - std::round(taps)) > 1e-3f;
-      }
-    EXPECT_EQ(bad, 0);
-    EXPECT_GT(offGrid, 100);  // the bilinear weights leave the box filter's grid
+  for (const auto& [k, bilinear] : {std::pair{3, false}, std::pair{5, false}, std::pair{1, true}, std::pair{3, true}}) {
+    SCOPED_TRACE("kernel " + std::to_string(k) + (bilinear ? " bilinear" : " box"));
+    const PcfValues values = pcfValues(runner, k, bilinear);
+    EXPECT_EQ(values.nanOnReceiver, 0);
+    EXPECT_EQ(values.outOfRange, 0);
+    if (bilinear) {
+      EXPECT_GT(values.offGrid, 100);  // the bilinear weights leave the box filter's grid
+      continue;
+    }
+    EXPECT_EQ(values.notNanBackground, 0);
+    EXPECT_EQ(values.offGrid, 0);
+    EXPECT_GT(values.partial, 100);
   }
 }
 

@@ -5,6 +5,7 @@
 // depth 0.5, so s = 1 exactly where the texel centre is off the occluder.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -141,6 +142,25 @@ std::vector<Edge> staircases() {
   return edges;
 }
 
+// How many of `values` lie strictly between 0 and 1 (filtered), and how many outside [0, 1]
+// (NaN included).
+int strictlyBetween(const std::vector<float>& values) {
+  return int(std::count_if(values.begin(), values.end(), [](float v) { return v > 0.0f && v < 1.0f; }));
+}
+int outsideTheUnitInterval(const std::vector<float>& values) {
+  return int(std::count_if(values.begin(), values.end(), [](float v) { return !(v >= 0.0f && v <= 1.0f); }));
+}
+
+// Runs `check` once per staircase, its occluder uploaded to the probe and its name traced.
+template <typename Check>
+void forEachStaircase(Probe& p, Check check) {
+  for (const auto& edge : staircases()) {
+    SCOPED_TRACE(edge.name);
+    p.upload(edge.occluded);
+    check(edge);
+  }
+}
+
 // Improved SMSR (EDTSM* eq. 7) and RSMSS put the edge closer to the true line than the
 // stair: fewer wrongly classified samples than the shadow test. Conservative SMSR (eq. 4)
 // only ever adds shadow on the lit side (entering discontinuities), so its false-lit
@@ -154,9 +174,7 @@ TEST(RevectorizationGlsl, RevectorizedEdgeIsCloserToTheLineThanTheStair) {
   const auto points = grid(6, 6, 26, 26);
   std::cout << "edge                        samples wrong: sm  smsr-cons  smsr-impr  rsmss\n";
   int smSum = 0, consSum = 0, imprSum = 0, rsmssSum = 0;
-  for (const auto& edge : staircases()) {
-    SCOPED_TRACE(edge.name);
-    p.upload(edge.occluded);
+  forEachStaircase(p, [&](const Edge& edge) {
     const Errors sm = classify(p.run(kShadowTest, points), points, edge.occluded);
     const Errors cons = classify(p.run(kSmsr, points), points, edge.occluded);
     const Errors impr = classify(p.run(kSmsr, points, {.improved = true}), points, edge.occluded);
@@ -169,7 +187,7 @@ TEST(RevectorizationGlsl, RevectorizedEdgeIsCloserToTheLineThanTheStair) {
     EXPECT_GE(cons.falseShadow, sm.falseShadow);
     EXPECT_LT(impr.falseShadow, cons.falseShadow);  // EDTSM*: improved overestimates less
     smSum += sm.total(), consSum += cons.total(), imprSum += impr.total(), rsmssSum += rsmss.total();
-  }
+  });
   std::printf("%-28s %20d %10d %10d %6d\n", "sum", smSum, consSum, imprSum, rsmssSum);
   std::fflush(stdout);
   EXPECT_LT(imprSum * 2, smSum);  // the improved line is close to exact on ideal staircases
@@ -322,9 +340,7 @@ TEST(RevectorizationGlsl, MaxSearchCutsOffLongEdges) {
 TEST(RevectorizationGlsl, ImprovedVisibilityIsSymmetricInLitAndShadow) {
   Probe& p = probe();
   const auto points = grid(4, 4, 28, 28);
-  for (const auto& edge : staircases()) {
-    SCOPED_TRACE(edge.name);
-    p.upload(edge.occluded);
+  forEachStaircase(p, [&](const Edge& edge) {
     const auto a = p.run(kSmsr, points, {.improved = true});
     const auto ra = p.run(kRsmss, points);
     p.upload([&](double x, double y) { return !edge.occluded(x, y); });
@@ -337,45 +353,32 @@ TEST(RevectorizationGlsl, ImprovedVisibilityIsSymmetricInLitAndShadow) {
     }
     EXPECT_EQ(asymmetric, 0);
     EXPECT_EQ(rsmssAsymmetric, 0);
-  }
+  });
 }
 
 // RSMSS is a visibility in [0, 1], with values strictly between on edges (it filters).
 TEST(RevectorizationGlsl, RsmssValuesAreInTheUnitInterval) {
   Probe& p = probe();
   const auto points = grid(0, 0, kSize, kSize);
-  for (const auto& edge : staircases()) {
-    SCOPED_TRACE(edge.name);
-    p.upload(edge.occluded);
-    int outside = 0, partial = 0;
-    for (const int kernel : {1, 3}) {
-      const auto v = p.run(kernel == 1 ? kRsmss : kRpcfRsmss, points, {.kernel = kernel});
-      for (const float x : v) {
-        outside += !(x >= 0.0f && x <= 1.0f);
-        partial += x > 0.0f && x < 1.0f;
-      }
-    }
-    EXPECT_EQ(outside, 0);
-    EXPECT_GT(partial, 0);
-  }
+  forEachStaircase(p, [&](const Edge&) {
+    const auto one = p.run(kRsmss, points, {.kernel = 1}), three = p.run(kRpcfRsmss, points, {.kernel = 3});
+    EXPECT_EQ(outsideTheUnitInterval(one) + outsideTheUnitInterval(three), 0);
+    EXPECT_GT(strictlyBetween(one) + strictlyBetween(three), 0);
+  });
 }
 
 // RPCF with a 1×1 kernel is its base function bit for bit (eqs. 2 and 3).
 TEST(RevectorizationGlsl, RpcfWithKernelOneEqualsItsBase) {
   Probe& p = probe();
   const auto points = grid(0, 0, kSize, kSize);
-  for (const auto& edge : staircases()) {
-    SCOPED_TRACE(edge.name);
-    p.upload(edge.occluded);
+  forEachStaircase(p, [&](const Edge&) {
     for (const bool improved : {false, true})
       EXPECT_EQ(p.run(kRpcfSmsr, points, {.improved = improved, .kernel = 1}),
                 p.run(kSmsr, points, {.improved = improved}));
     EXPECT_EQ(p.run(kRpcfRsmss, points, {.kernel = 1}), p.run(kRsmss, points));
     // A wider kernel filters: values strictly between 0 and 1 appear.
-    int partial = 0;
-    for (const float v : p.run(kRpcfSmsr, points, {.kernel = 3})) partial += v > 0.0f && v < 1.0f;
-    EXPECT_GT(partial, 0);
-  }
+    EXPECT_GT(strictlyBetween(p.run(kRpcfSmsr, points, {.kernel = 3})), 0);
+  });
 }
 
 }  // namespace

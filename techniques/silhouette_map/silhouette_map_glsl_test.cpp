@@ -62,39 +62,38 @@ TEST(SilhouetteMapGlsl, PointPickingFollowsTheNotesCases) {
   EXPECT_EQ(r[5].w, 0.0f);
 }
 
+// A texel's silhouette point and its four neighbours' (right, up, left, down), texel units.
+struct FivePoints {
+  glm::vec2 c, right, up, left, down;
+};
+
 struct QuadrantCase {
-  glm::vec2 c, right, up, left, down, f;
+  FivePoints points;
+  glm::vec2 f;
   int corner;
 };
 
 TEST(SilhouetteMapGlsl, QuadrantsAreSkewedByTheFivePoints) {
-  const glm::vec2 centre{0.5f}, right{1.5f, 0.5f}, up{0.5f, 1.5f}, left{-0.5f, 0.5f}, down{0.5f, -0.5f};
+  const glm::vec2 right{1.5f, 0.5f}, left{-0.5f, 0.5f}, down{0.5f, -0.5f};
+  // No silhouette around: every point at its texel's centre.
+  const FivePoints centres{{0.5f, 0.5f}, right, {0.5f, 1.5f}, left, down};
   // A near-vertical silhouette x = 0.3 + 0.1 y through this texel and its upper and
   // lower neighbours: the side of the line decides, not the nearest corner.
-  const glm::vec2 c{0.35f, 0.5f}, upOnLine{0.45f, 1.5f}, downOnLine{0.25f, -0.5f};
+  const FivePoints onALine{{0.35f, 0.5f}, right, {0.45f, 1.5f}, left, {0.25f, -0.5f}};
   // The texel's point near corner (1,1), its right and up neighbours' points near their
   // far sides: quadrant 3 is a reflex sweep (> 180°) and (0.9, 0.9) belongs to corner 0.
-  const glm::vec2 nearCorner{0.95f}, farRight{1.5f, 0.05f}, farUp{0.05f, 1.5f};
+  const FivePoints reflex{glm::vec2{0.95f}, {1.5f, 0.05f}, {0.05f, 1.5f}, left, down};
   const std::vector<QuadrantCase> cases = {
-      // No silhouette around: the four axis-aligned quarters, i.e. sm's nearest sample.
-      {centre, right, up, left, down, {0.8f, 0.9f}, 3},
-      {centre, right, up, left, down, {0.2f, 0.9f}, 2},
-      {centre, right, up, left, down, {0.2f, 0.1f}, 0},
-      {centre, right, up, left, down, {0.9f, 0.2f}, 1},
-      {c, right, upOnLine, left, downOnLine, {0.40f, 0.9f}, 3},
-      {c, right, upOnLine, left, downOnLine, {0.38f, 0.9f}, 2},
-      {c, right, upOnLine, left, downOnLine, {0.30f, 0.1f}, 0},
-      {c, right, upOnLine, left, downOnLine, {0.32f, 0.1f}, 1},
-      {nearCorner, farRight, farUp, left, down, {0.90f, 0.20f}, 1},
-      {nearCorner, farRight, farUp, left, down, {0.90f, 0.90f}, 0},
-      {nearCorner, farRight, farUp, left, down, {0.97f, 0.99f}, 3},
-      {nearCorner, farRight, farUp, left, down, {0.20f, 0.90f}, 2},
+      // The four axis-aligned quarters, i.e. sm's nearest sample.
+      {centres, {0.8f, 0.9f}, 3}, {centres, {0.2f, 0.9f}, 2}, {centres, {0.2f, 0.1f}, 0}, {centres, {0.9f, 0.2f}, 1},
+      {onALine, {0.40f, 0.9f}, 3}, {onALine, {0.38f, 0.9f}, 2}, {onALine, {0.30f, 0.1f}, 0}, {onALine, {0.32f, 0.1f}, 1},
+      {reflex, {0.90f, 0.20f}, 1},  {reflex, {0.90f, 0.90f}, 0},  {reflex, {0.97f, 0.99f}, 3},  {reflex, {0.20f, 0.90f}, 2},
   };
   std::vector<glm::vec4> data;
   for (const auto& q : cases) {
-    data.emplace_back(q.c, q.right);
-    data.emplace_back(q.up, q.left);
-    data.emplace_back(q.down, q.f);
+    data.emplace_back(q.points.c, q.points.right);
+    data.emplace_back(q.points.up, q.points.left);
+    data.emplace_back(q.points.down, q.f);
   }
   const auto r = probe(1, data);
   for (std::size_t i = 0; i < cases.size(); ++i) EXPECT_EQ(int(r[i].x), cases[i].corner) << "case " << i;
