@@ -3,7 +3,6 @@
 // tests/ may reach up, to drive what they test through the harness) and fails on an
 // include that reaches sideways or up, naming the file, the line and the rule.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -12,6 +11,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "tests/cli_helpers.h"
 
 namespace {
 
@@ -115,17 +116,13 @@ TEST(Layering, EveryTestbedFolderHasALayer) {
 
 // The rule itself: a planted upward include is found, so the check above can fail.
 TEST(Layering, AnUpwardIncludeIsReported) {
-  const fs::path root = fs::temp_directory_path() / ("layering_test_" + std::to_string(::getpid()));
-  fs::create_directories(root / "testbed/render");
-  fs::create_directories(root / "testbed/harness");
-  fs::create_directories(root / "techniques/x");
+  const testbed::test::TempDir root("testbed-layering");
   fs::create_directories(root / "groundtruth");
-  std::ofstream(root / "testbed/render/a.h") << "#include \"testbed/harness/frame_runner.h\"\n";
-  std::ofstream(root / "testbed/harness/b.cpp") << "#include \"testbed/render/gpu_scene.h\"\n";
-  std::ofstream(root / "techniques/x/c.cpp") << "#include \"groundtruth/volume_geometry.h\"\n";
-  std::ofstream(root / "techniques/x/c_test.cpp") << "#include \"testbed/harness/frame_runner.h\"\n";
-  const auto violations = layeringViolations(root);
-  fs::remove_all(root);
+  testbed::test::writeFile(root / "testbed/render/a.h", "#include \"testbed/harness/frame_runner.h\"\n");
+  testbed::test::writeFile(root / "testbed/harness/b.cpp", "#include \"testbed/render/gpu_scene.h\"\n");
+  testbed::test::writeFile(root / "techniques/x/c.cpp", "#include \"groundtruth/volume_geometry.h\"\n");
+  testbed::test::writeFile(root / "techniques/x/c_test.cpp", "#include \"testbed/harness/frame_runner.h\"\n");
+  const auto violations = layeringViolations(root.path());
   ASSERT_EQ(violations.size(), 2u);
   std::map<std::string, std::string> byFile;
   for (const auto& v : violations) byFile[v.where] = v.what;
