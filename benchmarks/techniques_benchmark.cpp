@@ -40,12 +40,13 @@ struct Options {
   std::vector<std::string> plugins;
 };
 
-// A positive integer, the whole of `text`; else an InputError naming the flag.
-int positive(const char* flag, std::string_view text, const char* expected) {
+// A positive integer, the whole of `text` (a part of the flag's value `given`); else an
+// InputError naming the flag.
+int positive(const char* flag, std::string_view text, std::string_view given, const char* expected) {
   int value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (ec != std::errc() || end != text.data() + text.size() || value < 1)
-    throw testbed::InputError(std::string(flag) + ": expected " + expected + ", got '" + std::string(text) + "'");
+    throw testbed::InputError(std::string(flag) + ": expected " + expected + ", got '" + std::string(given) + "'");
   return value;
 }
 
@@ -65,7 +66,7 @@ Options takeOwnFlags(int& argc, char** argv) {
       const std::string_view list(v);
       for (std::size_t start = 0;;) {  // every comma separates two sizes: "512," holds an empty one
         const std::size_t comma = std::min(list.find(',', start), list.size());
-        options.shadowMaps.push_back(positive("--shadow-maps", list.substr(start, comma - start),
+        options.shadowMaps.push_back(positive("--shadow-maps", list.substr(start, comma - start), list,
                                               "positive sizes separated by commas, e.g. 512,1024"));
         if (comma == list.size()) break;
         start = comma + 1;
@@ -74,8 +75,8 @@ Options takeOwnFlags(int& argc, char** argv) {
       const std::string_view size(v);
       const std::size_t x = size.find('x');
       const char* expected = "WxH with positive integers, e.g. 1280x720";
-      if (x == std::string_view::npos) throw testbed::InputError("--size: expected " + std::string(expected) + ", got '" + std::string(size) + "'");
-      options.size = {positive("--size", size.substr(0, x), expected), positive("--size", size.substr(x + 1), expected)};
+      const std::string_view width = size.substr(0, x), height = x == std::string_view::npos ? "" : size.substr(x + 1);
+      options.size = {positive("--size", width, size, expected), positive("--size", height, size, expected)};
     } else if (const char* v = value("--backend=")) {
       options.backend = v;
     } else if (const char* v = value("--plugin=")) {

@@ -55,7 +55,8 @@ TEST(MetricTable, RatiosAreAgainstSmAndTheWholeFrame) {
   EXPECT_EQ(*metric("x_sm").value(smsr, &sm), 3);
   EXPECT_EQ(*metric("x_sm_frame").value(smsr, &sm), 2);  // (10 + 30) / (10 + 10)
   EXPECT_FALSE(metric("x_sm").value(smsr, nullptr));
-  EXPECT_FALSE(metric("x_sm").value(smsr, &timed("sm", 0, 10)));  // sm's 0 is not a measurement
+  const Record zero = timed("sm", 0, 10);
+  EXPECT_FALSE(metric("x_sm").value(smsr, &zero));  // sm's 0 is not a measurement
   EXPECT_EQ(*metric("frame_ms").value(smsr, nullptr), 40);
   EXPECT_EQ(*metric("fps").value(smsr, nullptr), 25);
   EXPECT_EQ(metric("fps").better, Better::Higher);

@@ -55,7 +55,9 @@ struct Reader {
     return v;
   }
   std::uint64_t count() const {
-    if (!value.is_number_unsigned()) fail("expected a non-negative integer");
+    // A parsed file holds unsigned numbers; a record built in code may hold signed ones.
+    if (!value.is_number_unsigned() && !(value.is_number_integer() && value.get<std::int64_t>() >= 0))
+      fail("expected a non-negative integer");
     return value.get<std::uint64_t>();
   }
   bool boolean() const {
