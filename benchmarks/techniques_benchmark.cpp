@@ -1,40 +1,54 @@
 // Registry-driven benchmarks: one per technique × bundled scene × shadow-map size. The
 // manual time is the technique's frame time: GL timer queries on a GPU, wall time between
 // glFinish calls on llvmpipe (whose queries miss draw-time vertex work; gl/pass_timer.h).
-// Pass counters use the same measure; gpu_query_ms always holds the queries' total. A
-// technique added later appears here without touching this file.
+// A technique added later appears here without touching this file.
 //
 // Own flags (before or after Google Benchmark's): --scenes=DIR (default: the bundled
 // scenes/), --shadow-maps=512,1024 (default 1024), --size=WxH (default 1280x720),
 // --backend=osmesa|egl, --plugin=PATH (repeatable: techniques from a plugin library,
-// testbed/technique/plugin.h). Counters: memory_bytes, cpu_ms, one "<pass>_ms" per pass,
-// and x_sm / x_sm_frame: the frame time over sm's on the same runner, measured right after
-// the benchmark (technique only, and with the G-buffer pass added to both: the whole frame).
+// testbed/technique/plugin.h). A bad value is one line naming the flag, exit 2.
+// Counters: the metric table's kCounter metrics (harness/metric_table.h: memory_bytes,
+// cpu_ms, gpu_ms.total, wall_ms.total, x_sm, x_sm_frame) of the benchmark's mean frame, sm
+// being measured on the same runner right after the benchmark; and one "<pass>_ms" per pass
+// in the frame time's measure.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
-#include <sstream>
 #include <vector>
 
-#include "testbed/harness/frame_runner.h"
 #include "testbed/app/plugins.h"
 #include "testbed/core/error.h"
 #include "testbed/gl/context.h"
+#include "testbed/harness/frame_runner.h"
+#include "testbed/harness/metric_table.h"
+#include "testbed/harness/record.h"
+#include "testbed/harness/timing.h"
 
 namespace {
 
 struct Options {
   std::filesystem::path scenes = std::filesystem::path(TESTBED_SOURCE_DIR) / "scenes";
   std::vector<int> shadowMaps = {1024};
-  std::string size = "1280x720";
+  glm::ivec2 size{1280, 720};
   std::string backend = "osmesa";
   std::vector<std::string> plugins;
 };
+
+// A positive integer, the whole of `text` (a part of the flag's value `given`); else an
+// InputError naming the flag.
+int positive(const char* flag, std::string_view text, std::string_view given, const char* expected) {
+  int value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size() || value < 1)
+    throw testbed::InputError(std::string(flag) + ": expected " + expected + ", got '" + std::string(given) + "'");
+  return value;
+}
 
 // Takes our flags out of argv so Google Benchmark does not reject them.
 Options takeOwnFlags(int& argc, char** argv) {
@@ -49,10 +63,20 @@ Options takeOwnFlags(int& argc, char** argv) {
       options.scenes = v;
     } else if (const char* v = value("--shadow-maps=")) {
       options.shadowMaps.clear();
-      std::stringstream list(v);
-      for (std::string item; std::getline(list, item, ',');) options.shadowMaps.push_back(std::stoi(item));
+      const std::string_view list(v);
+      for (std::size_t start = 0;;) {  // every comma separates two sizes: "512," holds an empty one
+        const std::size_t comma = std::min(list.find(',', start), list.size());
+        options.shadowMaps.push_back(positive("--shadow-maps", list.substr(start, comma - start), list,
+                                              "positive sizes separated by commas, e.g. 512,1024"));
+        if (comma == list.size()) break;
+        start = comma + 1;
+      }
     } else if (const char* v = value("--size=")) {
-      options.size = v;
+      const std::string_view size(v);
+      const std::size_t x = size.find('x');
+      const char* expected = "WxH with positive integers, e.g. 1280x720";
+      const std::string_view width = size.substr(0, x), height = x == std::string_view::npos ? "" : size.substr(x + 1);
+      options.size = {positive("--size", width, size, expected), positive("--size", height, size, expected)};
     } else if (const char* v = value("--backend=")) {
       options.backend = v;
     } else if (const char* v = value("--plugin=")) {
@@ -80,16 +104,20 @@ testbed::FrameRunner& runnerFor(const std::string& scene, const testbed::RenderS
   return *runner;
 }
 
-// sm's frame time on `runner`: the median of 3 frames after a warm-up.
-double smFrameMs(testbed::FrameRunner& runner, testbed::TimingSource source) {
+// sm's record on `runner`: the median of 3 frames after a warm-up.
+testbed::Record smRecord(testbed::FrameRunner& runner) {
   const auto& sm = testbed::findTechnique("sm");
   const auto parameters = testbed::resolveParameters(sm.info->id, sm.info->parameters, {});
   testbed::TechniqueSession session(runner, sm, parameters);
   session.renderFrame();
-  std::vector<double> ms;
-  for (int i = 0; i < 3; ++i) ms.push_back(testbed::frameTimeMs(session.renderFrame().times, source));
-  std::sort(ms.begin(), ms.end());
-  return ms[1];
+  std::vector<testbed::PassTimes> frames;
+  for (int i = 0; i < 3; ++i) frames.push_back(session.renderFrame().times);
+  testbed::TechniqueRun run;
+  run.id = sm.info->id;
+  run.params = parameters.toJson();
+  run.times = testbed::medianPassTimes(frames);
+  run.memoryBytes = session.memoryBytes();
+  return testbed::makeRecord(run, runner, g_fixture.context->description());
 }
 
 void runTechnique(benchmark::State& state, std::string techniqueId, std::string scene,
@@ -99,28 +127,33 @@ void runTechnique(benchmark::State& state, std::string techniqueId, std::string 
   testbed::FrameRunner& runner = runnerFor(scene, settings);
   testbed::TechniqueSession session(runner, technique, parameters);
   session.renderFrame();  // warm-up
-  const auto source = testbed::timingSourceFor(g_fixture.context->description());
-  std::map<std::string, double> passTotals;
-  double cpuTotal = 0, gpuTotal = 0, frameTotal = 0;
+  const std::string backend = g_fixture.context->description();
+  const auto source = testbed::timingSourceFor(backend);
+  testbed::TechniqueRun mean;  // every figure the mean over the iterations
+  mean.id = technique.info->id;
+  mean.params = parameters.toJson();
   for (auto _ : state) {
     const auto frame = session.renderFrame();
-    const double frameMs = testbed::frameTimeMs(frame.times, source);
-    state.SetIterationTime(frameMs * 1e-3);
-    frameTotal += frameMs;
-    const auto& passes = source == testbed::TimingSource::Wall ? frame.times.wallPassMs : frame.times.passMs;
-    for (const auto& [name, ms] : passes) passTotals[name] += ms;
-    cpuTotal += frame.cpuMs;
-    gpuTotal += frame.times.totalMs;
+    state.SetIterationTime(testbed::frameTimeMs(frame.times, source) * 1e-3);
+    if (mean.times.order.empty()) mean.times.order = frame.times.order;
+    for (const auto& [name, ms] : frame.times.passMs) mean.times.passMs[name] += ms;
+    for (const auto& [name, ms] : frame.times.wallPassMs) mean.times.wallPassMs[name] += ms;
+    mean.times.totalMs += frame.times.totalMs;
+    mean.times.wallTotalMs += frame.times.wallTotalMs;
+    mean.cpuMs += frame.cpuMs;
   }
   const double n = double(std::max<benchmark::IterationCount>(state.iterations(), 1));
-  state.counters["memory_bytes"] = double(session.memoryBytes());
-  state.counters["cpu_ms"] = cpuTotal / n;
-  state.counters["gpu_query_ms"] = gpuTotal / n;
-  for (const auto& [name, total] : passTotals) state.counters[name + "_ms"] = total / n;
-  const double smMs = smFrameMs(runner, source);
-  const double gbufferMs = testbed::frameTimeMs(runner.gbufferTimes(), source);
-  state.counters["x_sm"] = frameTotal / n / smMs;
-  state.counters["x_sm_frame"] = (frameTotal / n + gbufferMs) / (smMs + gbufferMs);
+  for (auto* passes : {&mean.times.passMs, &mean.times.wallPassMs})
+    for (auto& [name, ms] : *passes) ms /= n;
+  mean.times.totalMs /= n;
+  mean.times.wallTotalMs /= n;
+  mean.cpuMs /= n;
+  mean.memoryBytes = session.memoryBytes();
+  const testbed::Record record = testbed::makeRecord(mean, runner, backend), sm = smRecord(runner);
+  for (const auto& metric : testbed::metricTable())
+    if (metric.shownIn(testbed::kCounter))
+      if (const auto value = metric.value(record, &sm)) state.counters[std::string(metric.name)] = *value;
+  for (const auto& [name, ms] : record.timed().passesMs) state.counters[name + "_ms"] = ms;
   state.SetLabel(g_fixture.context->description());
 }
 
@@ -135,16 +168,16 @@ int main(int argc, char** argv) {
 
     g_fixture.context = testbed::createContext(options.backend);
     std::vector<std::filesystem::path> files;
+    std::error_code ec;
+    if (!std::filesystem::is_directory(options.scenes, ec))
+      throw testbed::InputError("--scenes: " + options.scenes.string() + " is not a folder");
     for (const auto& entry : std::filesystem::directory_iterator(options.scenes))
       if (entry.path().extension() == ".json") files.push_back(entry.path());
     std::sort(files.begin(), files.end());
     if (files.empty()) throw testbed::InputError(options.scenes.string() + ": no scene files");
 
     testbed::RenderSettings base;
-    base.size = [&] {
-      const auto x = options.size.find('x');
-      return glm::ivec2(std::stoi(options.size.substr(0, x)), std::stoi(options.size.substr(x + 1)));
-    }();
+    base.size = options.size;
     for (const auto& file : files) {
       testbed::Scene scene = testbed::loadScene(file);
       const std::string name = scene.name;

@@ -10,6 +10,7 @@
 #include "testbed/core/error.h"
 #include "testbed/core/messages.h"
 #include "testbed/gl/context.h"
+#include "testbed/harness/metric_table.h"
 #include "testbed/metrics/metrics.h"
 #include "testbed/report/comparison.h"
 
@@ -71,12 +72,6 @@ std::map<std::string, std::map<std::string, std::string>> routeAssignments(const
   return byTechnique;
 }
 
-std::string milliseconds(double ms) {
-  std::ostringstream text;
-  text << ms << " ms";
-  return text.str();
-}
-
 }  // namespace
 
 CommandRunner addCompareCommand(CLI::App& app) {
@@ -128,10 +123,10 @@ CommandRunner addCompareCommand(CLI::App& app) {
     auto progress = [&](const std::string& what) {
       beginProgressLine("[" + std::to_string(++step) + "/" + std::to_string(steps) + "] " + what + " on " + scene.name);
     };
-    auto writeOutputs = [&](const std::string& id, const TechniqueRun& run, const nlohmann::json& record) {
+    auto writeOutputs = [&](const std::string& id, const TechniqueRun& run, const Record& record) {
       files.writeImage(id + ".png", runner.shade(run.visibility));
       files.writeImage(id + ".exr", run.visibility);
-      files.writeText(id + ".json", record.dump(2) + "\n");
+      files.writeText(id + ".json", nlohmann::json(record).dump(2) + "\n");
     };
 
     Comparison comparison;
@@ -141,11 +136,11 @@ CommandRunner addCompareCommand(CLI::App& app) {
     progress("groundtruth (shadow volumes)");
     const TechniqueRun truth = runner.run(shadowVolumeGroundTruth(), resolveParameters("groundtruth", {}, {}));
     comparison.groundTruth = makeRecord(truth, runner, backend);
-    comparison.groundTruth["error"] = toJson(computeErrorMetrics(truth.visibility, truth.visibility));
+    comparison.groundTruth.error = computeErrorMetrics(truth.visibility, truth.visibility);
     comparison.groundTruthVisibility = truth.visibility;
     writeOutputs("groundtruth", truth, comparison.groundTruth);
     all.push_back(comparison.groundTruth);
-    endProgressLine(": " + milliseconds(frameTimeMs(comparison.groundTruth)));
+    endProgressLine(": " + briefSummary(comparison.groundTruth, nullptr, ", "));
 
     std::optional<TechniqueRun> area;
     if (options->areaSamples > 0) {
@@ -153,10 +148,10 @@ CommandRunner addCompareCommand(CLI::App& app) {
       const auto& reference = areaLightReference();
       area = runner.run(reference, resolveParameters("area", reference.info->parameters,
                                                      {{"area_samples", std::to_string(options->areaSamples)}}));
-      nlohmann::json record = makeRecord(*area, runner, backend);
+      const Record record = makeRecord(*area, runner, backend);
       writeOutputs("area", *area, record);
       all.push_back(record);
-      endProgressLine(": " + milliseconds(frameTimeMs(record)));
+      endProgressLine(": " + briefSummary(record, nullptr, ", "));
     }
 
     for (std::size_t i = 0; i < techniques.size(); ++i) {
@@ -165,16 +160,13 @@ CommandRunner addCompareCommand(CLI::App& app) {
       const TechniqueRun run = runner.run(*techniques[i], parameters[i]);
       const ErrorMetrics error =
           computeErrorMetrics(run.visibility, truth.visibility, area ? &area->visibility : nullptr);
-      nlohmann::json record = makeRecord(run, runner, backend);
-      record["error"] = toJson(error);
+      Record record = makeRecord(run, runner, backend);
+      record.error = error;
       writeOutputs(id, run, record);
       all.push_back(record);
       comparison.entries.push_back({record, run.visibility, runner.shade(run.visibility),
                                     errorHeatMap(run.visibility, truth.visibility)});
-      std::ostringstream result;
-      result << ": " << frameTimeMs(record) << " ms (" << ratioToBaseline(comparison, record) << "x sm), mismatch "
-             << error.mismatchPct << "%, boundary " << error.boundaryMean << " px";
-      endProgressLine(result.str());
+      endProgressLine(": " + briefSummary(record, &baselineRecord(comparison), ", "));
     }
     files.writeText("metrics.json", all.dump(2) + "\n");
     files.writeText("report.md", reportMarkdown(comparison));

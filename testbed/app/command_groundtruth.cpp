@@ -12,6 +12,7 @@
 #include "testbed/core/error.h"
 #include "testbed/core/messages.h"
 #include "testbed/gl/context.h"
+#include "testbed/harness/record.h"
 
 namespace testbed {
 
@@ -58,7 +59,7 @@ CommandRunner addGroundTruthCommand(CLI::App& app) {
       const TechniqueRun run = runner.run(*technique, parameters);
       files.writeImage(id + ".png", runner.shade(run.visibility));
       files.writeImage(id + ".exr", run.visibility);
-      files.writeText(id + ".json", makeRecord(run, runner, context->description()).dump(2) + "\n");
+      files.writeText(id + ".json", nlohmann::json(makeRecord(run, runner, context->description())).dump(2) + "\n");
     }
     files.commit();
     std::cerr << "testbed: wrote to " << oneLine(options->common.out) << "\n";

@@ -91,27 +91,26 @@ CommandRunner addMergeCommand(CLI::App& app) {
 
     const SweepSpec spec = parseSweepSpec(first.spec, field(first, "spec_file"), false);
     const SweepPlan plan = planSweep(spec, overridesFromJson(first.manifest.at("overrides")));
-    std::vector<json> records;
+    std::vector<Record> records;
     std::map<std::size_t, const ShardDir*> ownerOf;
     for (const auto& s : shards)
       for (std::size_t i = 0; i < s.records.size(); ++i) {
-        const json& record = s.records[i];
         const std::string where = (s.dir / "records.json").string() + ": [" + std::to_string(i) + "]";
-        if (!record.is_object() || !record.contains("cell") || !record["cell"].is_number_unsigned() ||
-            record["cell"].get<std::size_t>() >= plan.cells.size() || !record.contains("backend"))
+        Record record = readRecord(s.records[i], where);
+        if (!record.cell || *record.cell >= plan.cells.size())
           throw InputError(where + ".cell: missing or not a cell of the spec's " + std::to_string(plan.cells.size()));
-        const std::size_t cell = record["cell"].get<std::size_t>();
+        const std::size_t cell = *record.cell;
         if (!s.shard.owns(cell) || !ownerOf.emplace(cell, &s).second)
           throw InputError(where + ".cell: cell " + std::to_string(cell) + " does not belong to shard " + s.shard.text() +
                            " or is there twice");
-        records.push_back(record);
+        records.push_back(std::move(record));
       }
     for (std::size_t cell = 0; cell < plan.cells.size(); ++cell)
       if (!ownerOf.count(cell))
         throw InputError("merge: cell " + std::to_string(cell) + " (" + plan.cells[cell].technique + " on " +
                          plan.cells[cell].scene + ") has no record in shard " +
                          Shard{int(cell % std::size_t(first.shard.count)) + 1, first.shard.count}.text());
-    std::sort(records.begin(), records.end(), [](const json& a, const json& b) { return a["cell"] < b["cell"]; });
+    std::sort(records.begin(), records.end(), [](const Record& a, const Record& b) { return *a.cell < *b.cell; });
 
     std::map<std::size_t, FigureImages> figureImages;
     for (std::size_t cell : figureCells(spec, plan)) {

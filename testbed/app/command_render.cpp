@@ -7,6 +7,8 @@
 #include "testbed/app/plugins.h"
 #include "testbed/core/messages.h"
 #include "testbed/gl/context.h"
+#include "testbed/harness/metric_table.h"
+#include "testbed/harness/record.h"
 
 namespace testbed {
 
@@ -49,12 +51,12 @@ CommandRunner addRenderCommand(CLI::App& app) {
 
     files.writeImage(id + ".png", runner.shade(run.visibility));
     files.writeImage(id + ".exr", run.visibility);
-    const nlohmann::json record = makeRecord(run, runner, context->description());
-    files.writeText(id + ".json", record.dump(2) + "\n");
+    const Record record = makeRecord(run, runner, context->description());
+    files.writeText(id + ".json", nlohmann::json(record).dump(2) + "\n");
     for (const auto& [name, image] : run.debugImages) files.writeImage(id + "." + name + ".png", image);
     files.commit();
     std::cerr << "testbed: wrote " << id << ".png, .exr, .json to " << oneLine(options->common.out) << " ("
-              << frameTimeMs(record) << " ms, " << run.memoryBytes << " bytes)\n";
+              << briefSummary(record, nullptr, ", ") << ", " << run.memoryBytes << " bytes)\n";
     return 0;
   };
 }

@@ -16,6 +16,8 @@
 #include "testbed/app/sweep_report.h"
 #include "testbed/core/error.h"
 #include "testbed/gl/context.h"
+#include "testbed/harness/metric_table.h"
+#include "testbed/harness/record.h"
 #include "testbed/metrics/metrics.h"
 #include "testbed/scene/primitives.h"
 #include "testbed/sweep/sweep_scene.h"
@@ -106,7 +108,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
     const std::set<std::size_t> figureSet(figure.begin(), figure.end());
 
     OutputFiles files(options->common.out);
-    std::vector<nlohmann::json> records;
+    std::vector<Record> records;
     std::map<std::size_t, FigureImages> figureImages;
     std::size_t steps = 0, step = 0;
     for (const auto& key : frames) steps += owned[key].size() + (shard.owns(plan.cells[owned[key].front()].truthCell) ? 0 : 1);
@@ -123,8 +125,8 @@ CommandRunner addSweepCommand(CLI::App& app) {
       const SweepCell& first = plan.cells[owned[key].front()];
       const Scene& scene = scenes.at(first.scene + "|" + (first.subdivide ? std::to_string(*first.subdivide) : "-"));
       FrameRunner runner(scene, {parseSize(first.size), first.shadowMap, parseDepthFormat(first.depthFormat), plan.repeat});
-      auto save = [&](std::size_t cell, const TechniqueRun& run, nlohmann::json record) {
-        record["cell"] = cell;
+      auto save = [&](std::size_t cell, const TechniqueRun& run, Record record) {
+        record.cell = cell;
         if (shard.owns(cell)) records.push_back(record);
         if (figureSet.count(cell) && shard.owns(cell)) {
           FigureImages images{run.visibility, runner.shade(run.visibility)};
@@ -139,22 +141,22 @@ CommandRunner addSweepCommand(CLI::App& app) {
       const std::size_t truthCell = first.truthCell;
       progress(first, shard.owns(truthCell) ? "groundtruth" : "groundtruth (reference for the errors)");
       const TechniqueRun truth = runner.run(shadowVolumeGroundTruth(), resolveParameters(kGroundTruthId, {}, {}));
-      nlohmann::json truthRecord = makeRecord(truth, runner, backend);
-      truthRecord["error"] = toJson(computeErrorMetrics(truth.visibility, truth.visibility));
-      std::cerr << ": " << frameTimeMs(truthRecord) << " ms\n";
+      Record truthRecord = makeRecord(truth, runner, backend);
+      truthRecord.error = computeErrorMetrics(truth.visibility, truth.visibility);
+      std::cerr << ": " << briefSummary(truthRecord, nullptr, ", ") << "\n";
       save(truthCell, truth, truthRecord);
       for (std::size_t i : owned[key]) {
         if (i == truthCell) continue;
         const SweepCell& cell = plan.cells[i];
         progress(cell, cell.technique);
         const TechniqueRun run = runner.run(techniqueOf(cell), parameters.at(i));
-        nlohmann::json record = makeRecord(run, runner, backend);
-        record["error"] = toJson(computeErrorMetrics(run.visibility, truth.visibility));
-        std::cerr << ": " << frameTimeMs(record) << " ms, mismatch " << record["error"]["mismatch_pct"].get<double>() << "%\n";
+        Record record = makeRecord(run, runner, backend);
+        record.error = computeErrorMetrics(run.visibility, truth.visibility);
+        std::cerr << ": " << briefSummary(record, nullptr, ", ") << "\n";
         save(i, run, record);
       }
     }
-    std::sort(records.begin(), records.end(), [](const auto& a, const auto& b) { return a["cell"] < b["cell"]; });
+    std::sort(records.begin(), records.end(), [](const Record& a, const Record& b) { return *a.cell < *b.cell; });
 
     std::string commandLine = "testbed sweep --spec " + options->spec + " --shard " + shard.text();
     for (const char* flag : {"--size", "--shadow-map", "--depth-format", "--repeat"})

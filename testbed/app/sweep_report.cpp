@@ -91,11 +91,10 @@ std::string figureFileName(std::size_t cell, const char* extension) {
   return "figure-cell-" + std::to_string(cell) + "." + extension;
 }
 
-void stageSweepReport(OutputFiles& files, const SweepSpec& spec, const SweepPlan& plan, const std::vector<json>& records,
+void stageSweepReport(OutputFiles& files, const SweepSpec& spec, const SweepPlan& plan, const std::vector<Record>& records,
                       const SweepHeader& header, const std::map<std::size_t, FigureImages>& figureImages) {
-  std::map<std::string, std::map<std::size_t, json>> byBackend;
-  for (const auto& record : records)
-    byBackend[record.at("backend").get<std::string>()][record.at("cell").get<std::size_t>()] = record;
+  std::map<std::string, std::map<std::size_t, Record>> byBackend;
+  for (const auto& record : records) byBackend[record.backend][record.cell.value()] = record;
   if (byBackend.empty()) byBackend[""];  // an empty table still shows the paper's figures
   for (const auto& [backend, cells] : byBackend) {
     const std::string name = byBackend.size() == 1 ? spec.name : spec.name + "." + slug(backend);

@@ -34,7 +34,7 @@ struct FigureImages {
 // Stages every backend's table (records of different backends never share a table) and
 // the close-up figure of the figure column's cells into `files`.
 void stageSweepReport(OutputFiles& files, const SweepSpec& spec, const SweepPlan& plan,
-                      const std::vector<nlohmann::json>& records, const SweepHeader& header,
+                      const std::vector<Record>& records, const SweepHeader& header,
                       const std::map<std::size_t, FigureImages>& figureImages);
 
 // Runs scripts/sweep_plot.py on each committed <name>*.json table in `dir`. Throws

@@ -5,21 +5,13 @@
 #include <cmath>
 #include <limits>
 
-#include <nlohmann/json.hpp>
-
 #include "testbed/core/error.h"
-#include "testbed/render/shadow_map_pass.h"
+#include "testbed/harness/shading.h"
+#include "testbed/harness/timing.h"
 #include "testbed/scene/light_fit.h"
 
 namespace testbed {
 namespace {
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0;
-  std::sort(values.begin(), values.end());
-  const std::size_t mid = values.size() / 2;
-  return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
-}
 
 // GL rows are bottom-up; files and metrics use top-down.
 ImageF readTopDown(const Texture& texture, int channels) {
@@ -134,24 +126,13 @@ TechniqueRun FrameRunner::run(const RegisteredTechnique& technique, const Parame
   std::vector<TechniqueSession::Frame> frames;
   for (int i = 0; i < settings_.repeat; ++i) frames.push_back(session.renderFrame());
 
-  std::vector<double> totals, wallTotals, cpu;
+  std::vector<PassTimes> times;
+  std::vector<double> cpu;
   for (const auto& f : frames) {
-    totals.push_back(f.times.totalMs);
-    wallTotals.push_back(f.times.wallTotalMs);
+    times.push_back(f.times);
     cpu.push_back(f.cpuMs);
   }
-  result.times.totalMs = median(totals);
-  result.times.wallTotalMs = median(wallTotals);
-  result.times.order = frames.front().times.order;
-  for (const auto& name : result.times.order) {
-    std::vector<double> values, wall;
-    for (const auto& f : frames) {
-      values.push_back(f.times.passMs.at(name));
-      wall.push_back(f.times.wallPassMs.at(name));
-    }
-    result.times.passMs[name] = median(values);
-    result.times.wallPassMs[name] = median(wall);
-  }
+  result.times = medianPassTimes(times);
   result.cpuMs = median(cpu);
   result.memoryBytes = session.memoryBytes();
   result.visibility = session.visibility();
@@ -160,68 +141,7 @@ TechniqueRun FrameRunner::run(const RegisteredTechnique& technique, const Parame
 }
 
 ImageF FrameRunner::shade(const ImageF& visibility) const {
-  constexpr float kAmbient = 0.15f, kAlbedo = 0.85f;
-  const glm::vec3 background(0.18f, 0.2f, 0.24f);
-  const LightTransforms& light = light_;
-  ImageF image;
-  image.width = visibility.width;
-  image.height = visibility.height;
-  image.channels = 3;
-  image.pixels.resize(std::size_t(image.width) * image.height * 3);
-  for (std::size_t i = 0; i < std::size_t(image.width) * image.height; ++i) {
-    glm::vec3 color = background;
-    if (positions_.pixels[i * 4 + 3] >= 0.5f) {
-      const glm::vec3 p(positions_.pixels[i * 4], positions_.pixels[i * 4 + 1], positions_.pixels[i * 4 + 2]);
-      const glm::vec3 n(normals_.pixels[i * 3], normals_.pixels[i * 3 + 1], normals_.pixels[i * 3 + 2]);
-      const glm::vec3 l = light.orthographic ? -light.direction : glm::normalize(light.position - p);
-      const float v = std::clamp(visibility.pixels[i], 0.0f, 1.0f);
-      color = glm::vec3(kAlbedo * (kAmbient + (1.0f - kAmbient) * std::max(glm::dot(n, l), 0.0f) * v));
-    }
-    for (int c = 0; c < 3; ++c) image.pixels[i * 3 + c] = color[c];
-  }
-  return image;
-}
-
-TimingSource timingSourceFor(std::string_view backend) {
-  for (const char* software : {"llvmpipe", "softpipe", "swrast"})
-    if (backend.find(software) != std::string_view::npos) return TimingSource::Wall;
-  return TimingSource::Gpu;
-}
-
-double frameTimeMs(const PassTimes& times, TimingSource source) {
-  return source == TimingSource::Wall ? times.wallTotalMs : times.totalMs;
-}
-
-double frameTimeMs(const nlohmann::json& record) {
-  return record.at(record.at("timing") == "wall" ? "wall_ms" : "gpu_ms").at("total").get<double>();
-}
-
-nlohmann::json makeRecord(const TechniqueRun& run, const FrameRunner& runner, const std::string& backend) {
-  nlohmann::json passes = nlohmann::json::object(), wallPasses = nlohmann::json::object();
-  for (const auto& name : run.times.order) {
-    passes[name] = run.times.passMs.at(name);
-    wallPasses[name] = run.times.wallPassMs.at(name);
-  }
-  const RenderSettings& s = runner.settings();
-  return {
-      {"technique", run.id},
-      {"scene", runner.scene().name},
-      {"size", {s.size.x, s.size.y}},
-      {"shadow_map", s.shadowMapSize},
-      {"depth_format", depthFormatName(s.depthFormat)},
-      {"params", run.params},
-      {"gpu_ms", {{"total", run.times.totalMs}, {"passes", passes}}},
-      {"wall_ms", {{"total", run.times.wallTotalMs}, {"passes", wallPasses}}},
-      {"cpu_ms", run.cpuMs},
-      {"gbuffer_ms", frameTimeMs(runner.gbufferTimes(), timingSourceFor(backend))},
-      {"timing", timingSourceFor(backend) == TimingSource::Wall ? "wall" : "gpu"},
-      {"repeat", s.repeat},
-      {"triangles", runner.triangleCount()},
-      {"memory_bytes", run.memoryBytes},
-      {"light", lightSetupRecord(runner.light(), s.shadowMapSize, s.depthFormat, run.params)},
-      {"backend", backend},
-      {"error", nullptr},
-  };
+  return shadeVisibility(positions_, normals_, light_, visibility);
 }
 
 }  // namespace testbed

@@ -1,9 +1,12 @@
 #pragma once
-// The harness around techniques: uploads a scene, renders the G-buffer, runs a technique
-// for a warm-up frame plus `repeat` timed frames, and reads back its visibility.
+// The frame loop around techniques: uploads a scene, renders the G-buffer, runs a technique
+// for a warm-up frame plus `repeat` timed frames, and reads back its visibility. What a run
+// becomes on disk is harness/record.h; how frames are timed, harness/timing.h.
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
@@ -23,7 +26,7 @@ struct RenderSettings {
   glm::ivec2 size{1280, 720};
   int shadowMapSize = 1024;
   DepthFormat depthFormat = DepthFormat::D16;
-  int repeat = 1;  // timed frames after the warm-up frame; times are medians
+  int repeat = 1;  // timed frames after the warm-up frame; times are medians (timing.h)
 };
 
 // Upper bounds that keep a typo (--size 100000x100000) from exhausting the machine.
@@ -39,7 +42,7 @@ struct TechniqueRun {
   std::string id;
   nlohmann::json params;
   ImageF visibility;         // one channel, top-down, NaN where no receiver
-  PassTimes times;           // medians over the timed frames
+  PassTimes times;           // medians over the timed frames (medianPassTimes)
   double cpuMs = 0;          // median wall time of a frame, glFinish to glFinish
   std::uint64_t memoryBytes = 0;
   std::vector<std::pair<std::string, ImageF>> debugImages;  // ShadowTechnique::debugImages()
@@ -82,7 +85,7 @@ class FrameRunner {
   ~FrameRunner();
 
   TechniqueRun run(const RegisteredTechnique& technique, const ParameterSet& parameters);
-  // Shaded image for people: Lambert × visibility plus ambient, RGB.
+  // Shaded image for people: Lambert × visibility plus ambient, RGB (harness/shading.h).
   ImageF shade(const ImageF& visibility) const;
 
   // Renders and reads back the G-buffer from the scene's current camera (the constructor
@@ -112,17 +115,5 @@ class FrameRunner {
   PassTimes gbufferTimes_;
   ImageF positions_, normals_;  // G-buffer readback for shading, top-down
 };
-
-// Which measure is a frame's time for ratios, reports and benchmarks: GL timer queries on
-// a GPU; wall time between glFinish calls on a software rasterizer (llvmpipe, softpipe),
-// whose queries miss the vertex work it does at draw time (see gl/pass_timer.h).
-enum class TimingSource { Gpu, Wall };
-TimingSource timingSourceFor(std::string_view backendDescription);
-double frameTimeMs(const PassTimes& times, TimingSource source);
-// The same from a record: its "timing" field names the measure.
-double frameTimeMs(const nlohmann::json& record);
-
-// The record of one run (README "Record"); `error` is null until compared with ground truth.
-nlohmann::json makeRecord(const TechniqueRun& run, const FrameRunner& runner, const std::string& backend);
 
 }  // namespace testbed

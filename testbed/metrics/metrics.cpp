@@ -7,7 +7,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 
 #include "testbed/metrics/distance_transform.h"
 
@@ -165,16 +164,6 @@ ErrorMetrics computeErrorMetrics(const ImageF& visibility, const ImageF& groundT
     m.boundaryP95 = pool[rank];
   }
   return m;
-}
-
-nlohmann::json toJson(const ErrorMetrics& m) {
-  return {{"mismatch_pct", m.mismatchPct},
-          {"edge_mismatch_pct", m.edgeMismatchPct},
-          {"rmse", m.rmse},
-          {"leak_pct", m.leakPct},
-          {"overestimation_pct", m.overestimationPct},
-          {"boundary_px", {{"mean", m.boundaryMean}, {"p95", m.boundaryP95}}},
-          {"soft_rmse", m.softRmse ? nlohmann::json(*m.softRmse) : nlohmann::json(nullptr)}};
 }
 
 ImageF errorHeatMap(const ImageF& visibility, const ImageF& groundTruth) {

@@ -1,14 +1,13 @@
 #pragma once
 // Error metrics of a technique's visibility image against the ground truth (README,
-// "Error metrics"), their JSON `error` block, and an error heat map for people.
+// "Error metrics") and an error heat map for people. The record's `error` block that holds
+// them is written by harness/record.h from the metric table (harness/metric_table.h).
 //
 // Inputs are one-channel ImageF visibility images (1 = lit, 0 = shadow, filtered values in
 // between, NaN = no receiver). Receivers are the pixels where the ground truth is not NaN;
 // every metric is taken over receivers only. Binary state: lit <=> value >= 0.5.
 #include <array>
 #include <optional>
-
-#include <nlohmann/json_fwd.hpp>
 
 #include "testbed/io/image_io.h"
 
@@ -52,11 +51,6 @@ struct ErrorMetrics {
 // message names the first such pixel as (x, y), y counted from the top row).
 ErrorMetrics computeErrorMetrics(const ImageF& visibility, const ImageF& groundTruth,
                                  const ImageF* areaReference = nullptr, const MetricOptions& options = {});
-
-// The record's `error` block: {"mismatch_pct", "edge_mismatch_pct", "rmse", "leak_pct",
-// "overestimation_pct", "boundary_px": {"mean", "p95"}, "soft_rmse"} with soft_rmse null
-// when absent. receivers and gtBoundaryPixels are not part of the contract and not written.
-nlohmann::json toJson(const ErrorMetrics& metrics);
 
 // Heat-map colours (linear RGB in [0, 1]).
 inline constexpr std::array<float, 3> kHeatBackground{0.12f, 0.12f, 0.12f};  // gt NaN: darkest grey

@@ -5,14 +5,13 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
+#include "testbed/harness/record.h"
 #include "testbed/io/image_io.h"
 
 namespace testbed {
 
 struct ComparisonEntry {
-  nlohmann::json record;  // the technique's record with its "error" block
+  Record record;          // the technique's record with its error block
   ImageF visibility;      // one channel, NaN background
   ImageF shaded;          // RGB, for people
   ImageF heatMap;         // RGB error classes against the ground truth
@@ -20,13 +19,13 @@ struct ComparisonEntry {
 
 struct Comparison {
   std::string scene;
-  nlohmann::json groundTruth;      // the ground truth's record (its cost is reported too)
+  Record groundTruth;              // the ground truth's record (its cost is reported too)
   ImageF groundTruthVisibility;
   std::vector<ComparisonEntry> entries;  // the first is the baseline `sm`
 };
 
-// GPU time ratio of a record to the baseline's (sm in the same run).
-double ratioToBaseline(const Comparison& comparison, const nlohmann::json& record);
+// The baseline every ratio is taken against: the first entry's record (sm).
+const Record& baselineRecord(const Comparison& comparison);
 
 std::string reportMarkdown(const Comparison& comparison);
 // Rows: technique | shaded image | error heat map | close-up of its worst boundary window.

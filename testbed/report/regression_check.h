@@ -10,25 +10,25 @@
 
 #include <nlohmann/json.hpp>
 
+#include "testbed/harness/metric_table.h"
+#include "testbed/harness/record.h"
+
 namespace testbed {
 
-// One technique's record, reduced to what the check compares.
+// One technique's record and its speed against `sm` in the same file and setup. The
+// metrics compared and how are the metric table's (harness/metric_table.h).
 struct CheckRecord {
   std::string file;  // the metrics.json it came from, for messages
-  std::string scene, technique, depthFormat, backend, timing;
-  int width = 0, height = 0, shadowMap = 0;
-  double frameMs = 0;             // gpu_ms or wall_ms total, as `timing` says
-  std::optional<double> smRatio;  // frameMs over `sm`'s in the same file and setup
+  Record record;
+  std::optional<double> smRatio;  // the Speed metric (x_sm) against `sm`'s record
   bool smTimeZero = false;        // `sm`'s time in the same file and setup is 0: no ratio
-  std::uint64_t memoryBytes = 0;
-  // The checked error metrics in report order; nullopt where the record has none (soft_rmse).
-  std::vector<std::pair<std::string, std::optional<double>>> errors;
 
   // scene, technique, screen size, shadow map, depth format: what records are matched by.
   std::string key() const;
 };
 
-// The records of one metrics.json array. The references (groundtruth, area) are skipped.
+// The records of one metrics.json array (a full record each, README "Record"; an error
+// block required). The references (groundtruth, area) are skipped.
 // Throws InputError "<file>: [i].field: what" for a missing or mistyped field.
 std::vector<CheckRecord> parseCheckRecords(const nlohmann::json& records, const std::string& file);
 
@@ -38,19 +38,15 @@ std::vector<CheckRecord> loadCheckRecords(const std::filesystem::path& path, con
 
 struct CheckTolerances {
   double speed = 0.25;  // relative, on the ratio to `sm`
-  double error = 0.05;  // relative, with an absolute floor per metric (errorFloor)
+  double error = 0.05;  // relative, with an absolute floor per metric (Metric::floor)
 };
-
-// The absolute slack under which a change of `metric` is noise (0.01 percentage points,
-// 0.001 RMSE, 0.01 px).
-double errorFloor(const std::string& metric);
 
 enum class FindingKind { Regression, Improvement, New };
 
 struct Finding {
   FindingKind kind;
   const CheckRecord* record;  // the current one; the baseline's for a missing record
-  std::string metric;         // an error metric, "speed_ratio", "memory_bytes", "missing" or "new"
+  const Metric* metric;       // null for a missing or a new record
   double baseline = 0, current = 0;
 };
 

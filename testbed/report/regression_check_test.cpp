@@ -9,17 +9,25 @@ namespace {
 
 using nlohmann::json;
 
-// A compare record of `technique` on bunny at 512², with the fields the check reads.
+// A compare record of `technique` on bunny at 512² (README "Record").
 json record(const std::string& technique, double wallMs = 20.0, double mismatch = 0.5) {
   return {{"technique", technique},
           {"scene", "bunny"},
           {"size", {1280, 720}},
           {"shadow_map", 512},
           {"depth_format", "16"},
+          {"params", json::object()},
           {"backend", "osmesa: llvmpipe"},
           {"timing", "wall"},
-          {"gpu_ms", {{"total", 1.0}, {"passes", json::object()}}},
-          {"wall_ms", {{"total", wallMs}, {"passes", json::object()}}},
+          {"gpu_ms", {{"total", 1.0}, {"passes", {{"visibility", 1.0}}}}},
+          {"wall_ms", {{"total", wallMs}, {"passes", {{"visibility", wallMs}}}}},
+          {"cpu_ms", wallMs},
+          {"gbuffer_ms", 2.0},
+          {"repeat", 1},
+          {"triangles", 12},
+          {"light",
+           {{"type", "spot"}, {"eye", {0.0, 10.0, 0.0}}, {"near", 1.0}, {"far", 20.0}, {"fov", 45.0}, {"fitted", true},
+            {"depth_step_world", {0.001, 0.01}}, {"texel_world", {0.01, 0.1}}}},
           {"memory_bytes", 524288},
           {"error",
            {{"mismatch_pct", mismatch},
@@ -53,7 +61,9 @@ Checked check(const json& baseline, const json& current, CheckTolerances toleran
 std::vector<std::string> findings(const Checked& c, FindingKind kind) {
   std::vector<std::string> out;
   for (const auto& f : c.report.findings)
-    if (f.kind == kind) out.push_back(f.record->technique + " " + f.metric);
+    if (f.kind == kind)
+      out.push_back(f.record->record.technique + " " +
+                    (f.metric ? std::string(f.metric->name) : kind == FindingKind::New ? "new" : "missing"));
   return out;
 }
 
@@ -121,8 +131,8 @@ TEST(RegressionCheck, SpeedIsTheRatioToSmInTheSameRun) {
   current[2]["wall_ms"]["total"] = 30.0 * 1.3;  // pcf: 1.5 → 1.95 × sm
   current[3]["wall_ms"]["total"] = 40.0 / 1.3;  // vsm: 2.0 → 1.54 × sm
   const Checked c = check(run(), current);
-  EXPECT_EQ(findings(c, FindingKind::Regression), Names{"pcf speed_ratio"});
-  EXPECT_EQ(findings(c, FindingKind::Improvement), Names{"vsm speed_ratio"});
+  EXPECT_EQ(findings(c, FindingKind::Regression), Names{"pcf x_sm"});
+  EXPECT_EQ(findings(c, FindingKind::Improvement), Names{"vsm x_sm"});
 }
 
 TEST(RegressionCheck, TimingFieldPicksGpuOrWallTime) {
@@ -132,7 +142,7 @@ TEST(RegressionCheck, TimingFieldPicksGpuOrWallTime) {
   current[2]["wall_ms"]["total"] = 1000.0;       // ignored under gpu timing
   EXPECT_TRUE(check(baseline, current).report.findings.empty());
   current[2]["gpu_ms"]["total"] = 2.0;
-  EXPECT_EQ(findings(check(baseline, current), FindingKind::Regression), Names{"pcf speed_ratio"});
+  EXPECT_EQ(findings(check(baseline, current), FindingKind::Regression), Names{"pcf x_sm"});
 }
 
 TEST(RegressionCheck, DifferentBackendsSkipSpeedButCheckAccuracy) {
@@ -196,6 +206,15 @@ TEST(RegressionCheck, MalformedRecordsNameTheFileAndField) {
   r = run();
   r[2]["timing"] = "cpu";
   EXPECT_EQ(message(r), "runs/metrics.json: [2].timing: expected \"gpu\" or \"wall\"");
+  r = run();
+  r[1]["light"].erase("near");
+  EXPECT_EQ(message(r), "runs/metrics.json: [1].light.near: missing");
+  r = run();
+  r[1]["error"] = nullptr;
+  EXPECT_EQ(message(r), "runs/metrics.json: [1].error: expected an object (records from `testbed compare`)");
+  r = run();
+  r[3]["memory_bytes"] = -1;
+  EXPECT_EQ(message(r), "runs/metrics.json: [3].memory_bytes: expected a non-negative integer");
   EXPECT_NE(message(json::object()).find("expected a JSON array"), std::string::npos);
 }
 

@@ -3,11 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
+#include "testbed/harness/metric_table.h"
 #include "testbed/report/comparison.h"
-
-#include "testbed/harness/frame_runner.h"
 
 namespace testbed {
 namespace {
@@ -61,14 +59,7 @@ OIIO::ImageBuf closeUp(const ImageF& image, int x, int y) {
 }
 
 std::string label(const Comparison& c, const ComparisonEntry& entry) {
-  const auto& r = entry.record;
-  const auto& e = r["error"];
-  std::ostringstream text;
-  text.precision(3);
-  text << r["technique"].get<std::string>() << "   " << frameTimeMs(r) << " ms ("
-       << ratioToBaseline(c, r) << "x sm)   mismatch " << e["mismatch_pct"].get<double>() << "%   boundary "
-       << e["boundary_px"]["mean"].get<double>() << " px   leak " << e["leak_pct"].get<double>() << "%";
-  return text.str();
+  return entry.record.technique + "   " + briefSummary(entry.record, &baselineRecord(c), "   ");
 }
 
 }  // namespace

@@ -11,12 +11,13 @@ ImageF constant(int width, int height, int channels, float value) {
   return ImageF{width, height, channels, std::vector<float>(std::size_t(width) * height * channels, value)};
 }
 
-nlohmann::json record(const std::string& id) {
-  return {{"technique", id},
-          {"timing", "wall"},
-          {"wall_ms", {{"total", 1.0}}},
-          {"gpu_ms", {{"total", 1.0}}},
-          {"error", {{"mismatch_pct", 0.0}, {"boundary_px", {{"mean", 0.0}}}, {"leak_pct", 0.0}}}};
+Record record(const std::string& id) {
+  Record r;
+  r.technique = id;
+  r.timing = TimingSource::Wall;
+  r.wall.totalMs = r.gpu.totalMs = 1.0;
+  r.error = ErrorMetrics{};
+  return r;
 }
 
 // The grid's size follows the number of techniques, never the screen's aspect ratio: a

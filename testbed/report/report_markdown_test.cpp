@@ -3,18 +3,25 @@
 #include <string>
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
 #include "testbed/report/comparison.h"
 
 namespace testbed {
 namespace {
 
-nlohmann::json record(const std::string& technique, double wallMs, double gbufferMs) {
-  return {{"technique", technique}, {"size", {160, 90}}, {"shadow_map", 256}, {"depth_format", "16"},
-          {"backend", "osmesa: test"}, {"repeat", 1}, {"timing", "wall"}, {"gbuffer_ms", gbufferMs},
-          {"wall_ms", {{"total", wallMs}}}, {"gpu_ms", {{"total", wallMs}}}, {"memory_bytes", 1024},
-          {"error", nlohmann::json::object()}, {"cpu_ms", wallMs}};
+Record record(const std::string& technique, double wallMs, double gbufferMs) {
+  Record r;
+  r.technique = technique;
+  r.width = 160;
+  r.height = 90;
+  r.shadowMap = 256;
+  r.depthFormat = "16";
+  r.backend = "osmesa: test";
+  r.timing = TimingSource::Wall;
+  r.gbufferMs = gbufferMs;
+  r.wall.totalMs = r.gpu.totalMs = r.cpuMs = wallMs;
+  r.memoryBytes = 1024;
+  return r;
 }
 
 std::string rowOf(const std::string& markdown, const std::string& technique) {
@@ -33,6 +40,13 @@ TEST(ReportMarkdown, GivesTheTechniqueOnlyAndTheWholeFrameRatio) {
   // technique only 30 / 10 = 3; whole frame (10 + 30) / (10 + 10) = 2.
   EXPECT_EQ(rowOf(md, "smsr").rfind("| `smsr` | 30.00 | 30.00 | 3.00 | 2.00 | 1 |", 0), 0u) << rowOf(md, "smsr");
   EXPECT_EQ(rowOf(md, "sm").rfind("| `sm` | 10.00 | 10.00 | 1.00 | 1.00 | 1 |", 0), 0u) << rowOf(md, "sm");
+  // Without an error block every error column reads "–".
+  EXPECT_NE(rowOf(md, "sm").find("| 1 | – | – | – | – | – | – | – | – |"), std::string::npos) << rowOf(md, "sm");
+  EXPECT_NE(md.find("| technique | GPU ms (queries) | wall ms | × sm | × sm frame | memory KiB | mismatch % | edge mismatch % "
+                    "| RMSE | leak % | overestimation % | boundary px mean | boundary px p95 | soft RMSE |\n|---|---:|"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("Ground truth (`groundtruth`): 30.00 ms, 3.00× sm;"), std::string::npos) << md;
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "testbed/harness/metric_table.h"
 #include "testbed/report/comparison.h"
 
 namespace testbed {
@@ -44,10 +45,11 @@ std::string speedVsErrorSvg(const Comparison& c) {
   };
   std::vector<Point> points;
   double maxX = 0, maxY = 0;
+  const Metric &speed = metric("x_sm"), &error = metric("boundary_px.mean");
   for (const auto& entry : c.entries) {
-    const double x = ratioToBaseline(c, entry.record);
-    const double y = entry.record["error"]["boundary_px"]["mean"].get<double>();
-    points.push_back({entry.record["technique"].get<std::string>(), x, y});
+    const double x = speed.value(entry.record, &baselineRecord(c)).value_or(NAN);
+    const double y = error.value(entry.record, nullptr).value_or(NAN);
+    points.push_back({entry.record.technique, x, y});
     if (std::isfinite(x)) maxX = std::max(maxX, x);
     if (std::isfinite(y)) maxY = std::max(maxY, y);
   }
@@ -75,7 +77,7 @@ std::string speedVsErrorSvg(const Comparison& c) {
       << "<text x=\"" << (left + W - right) / 2 << "\" y=\"" << H - 18
       << "\" text-anchor=\"middle\">frame time / sm's (same run)</text>\n"
       << "<text transform=\"translate(18," << (top + H - bottom) / 2
-      << ") rotate(-90)\" text-anchor=\"middle\">boundary_px.mean (pixels)</text>\n";
+      << ") rotate(-90)\" text-anchor=\"middle\">" << error.name << " (pixels)</text>\n";
   for (const auto& p : points) {
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
     svg << "<circle cx=\"" << px(p.x) << "\" cy=\"" << py(p.y) << "\" r=\"4\" fill=\"#c03\"/>"

@@ -129,15 +129,6 @@ bool SweepRow::measured(std::size_t column) const {
   return std::find(notMeasuredColumns.begin(), notMeasuredColumns.end(), column) == notMeasuredColumns.end();
 }
 
-std::string measureUnit(SweepMeasure measure) {
-  switch (measure) {
-    case SweepMeasure::FrameMs: return "ms";
-    case SweepMeasure::Fps: return "fps";
-    case SweepMeasure::MemoryMb: return "MB";
-  }
-  return "";
-}
-
 SweepSpec loadSweepSpec(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file.string() + ": cannot open the sweep spec");
@@ -184,11 +175,15 @@ SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneF
     if (settings.contains("repeat")) spec.repeat = r.integer(settings["repeat"], "settings.repeat", 1, 10000);
   }
   if (document.contains("measure")) {
-    const std::string m = r.text(document["measure"], "measure");
-    if (m == "frame_ms") spec.measure = SweepMeasure::FrameMs;
-    else if (m == "fps") spec.measure = SweepMeasure::Fps;
-    else if (m == "memory_mb") spec.measure = SweepMeasure::MemoryMb;
-    else r.fail("measure", "expected frame_ms, fps or memory_mb, got " + SpecReader::show(document["measure"]));
+    spec.measure = findMetric(r.text(document["measure"], "measure"), kSweepMeasure);
+    if (!spec.measure) {
+      std::string known;
+      for (const Metric& m : metricTable())
+        if (m.shownIn(kSweepMeasure)) known += (known.empty() ? "" : ", ") + std::string(m.name);
+      const auto last = known.rfind(", ");
+      if (last != std::string::npos) known.replace(last, 2, " or ");
+      r.fail("measure", "expected " + known + ", got " + SpecReader::show(document["measure"]));
+    }
   }
 
   const json& columns = document["columns"];

@@ -12,14 +12,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "testbed/harness/metric_table.h"
+
 namespace testbed {
 
 // The reference that every table can time (the stencil shadow volumes).
 inline constexpr const char* kGroundTruthId = "groundtruth";
-
-// What a table's numbers are. Times are the whole frame as the papers measured it: the
-// G-buffer plus every pass of the technique (shadow map included); `fps` is 1000 / that.
-enum class SweepMeasure { FrameMs, Fps, MemoryMb };
 
 // Settings a column or row may change; unset fields fall back to the level above
 // (column, then row, then the spec's "settings", then the command line's defaults).
@@ -65,7 +63,9 @@ struct SweepSpec {
   std::map<std::string, std::filesystem::path> scenes;  // id → scene file (absolute)
   SweepSettings settings;
   int repeat = 1;
-  SweepMeasure measure = SweepMeasure::FrameMs;
+  // What the table's numbers are: a kSweepMeasure metric (frame_ms: the whole frame as the
+  // papers measured it, G-buffer plus every pass of the technique; fps; memory_mb).
+  const Metric* measure = &metric("frame_ms");
   std::vector<SweepColumn> columns;
   std::vector<SweepRow> rows;
   SweepFigure figure;
@@ -77,7 +77,5 @@ SweepSpec loadSweepSpec(const std::filesystem::path& file);
 // `sceneFilesMustExist` false: for merge, which reads records, not scenes.
 SweepSpec parseSweepSpec(const nlohmann::json& document, const std::filesystem::path& file,
                          bool sceneFilesMustExist = true);
-
-std::string measureUnit(SweepMeasure measure);
 
 }  // namespace testbed

@@ -13,36 +13,37 @@ namespace {
 
 using nlohmann::json;
 
-const json& times(const json& record) { return record.at(record.at("timing") == "wall" ? "wall_ms" : "gpu_ms"); }
-
-double passMs(const json& record, const std::string& pass, const SweepSpec& spec, std::size_t row) {
-  if (pass == "gbuffer") return record.at("gbuffer_ms").get<double>();
-  const json& passes = times(record).at("passes");
-  if (!passes.contains(pass)) {
+double passMs(const Record& record, const std::string& pass, const SweepSpec& spec, std::size_t row) {
+  if (pass == "gbuffer") return record.gbufferMs;
+  const auto& passes = record.timed().passesMs;
+  const auto it = passes.find(pass);
+  if (it == passes.end()) {
     std::string known = "gbuffer";
-    for (const auto& [name, value] : passes.items()) known += ", " + name;
-    throw InputError(spec.file.string() + ": rows[" + std::to_string(row) + "].passes: " +
-                     record.at("technique").get<std::string>() + " has no pass '" + pass + "' (its passes: " + known + ")");
+    for (const auto& [name, value] : passes) known += ", " + name;
+    throw InputError(spec.file.string() + ": rows[" + std::to_string(row) + "].passes: " + record.technique +
+                     " has no pass '" + pass + "' (its passes: " + known + ")");
   }
-  return passes.at(pass).get<double>();
+  return it->second;
 }
 
-// One technique's value in the table's measure.
-double cellValue(const json& record, const SweepSpec& spec, std::size_t row) {
+// One technique's value in the table's measure; a row with `passes` measures the frame
+// made of those passes alone.
+double cellValue(const Record& record, const SweepSpec& spec, std::size_t row) {
   const SweepRow& r = spec.rows[row];
-  if (spec.measure == SweepMeasure::MemoryMb) return record.at("memory_bytes").get<double>() / (1024.0 * 1024.0);
-  double ms = 0;
-  if (r.passes)
-    for (const auto& pass : *r.passes) ms += passMs(record, pass, spec, row);
-  else
-    ms = recordFrameMs(record);
-  return spec.measure == SweepMeasure::Fps ? (ms > 0 ? 1000.0 / ms : NAN) : ms;
+  if (!r.passes) return spec.measure->value(record, nullptr).value_or(NAN);
+  Record part = record;
+  part.gbufferMs = 0;
+  PassesRecord& timed = part.timing == TimingSource::Wall ? part.wall : part.gpu;
+  timed.totalMs = 0;
+  for (const auto& pass : *r.passes)
+    (pass == "gbuffer" ? part.gbufferMs : timed.totalMs) += passMs(record, pass, spec, row);
+  return spec.measure->value(part, nullptr).value_or(NAN);
 }
 
 // Cost of `value` relative to `baseline` (> 1: dearer than sm), whatever the measure.
-std::optional<double> costRatio(std::optional<double> value, std::optional<double> baseline, SweepMeasure measure) {
+std::optional<double> costRatio(std::optional<double> value, std::optional<double> baseline, const Metric& measure) {
   if (!value || !baseline || *value <= 0 || *baseline <= 0) return std::nullopt;
-  return measure == SweepMeasure::Fps ? *baseline / *value : *value / *baseline;
+  return measure.better == Better::Higher ? *baseline / *value : *value / *baseline;
 }
 
 bool isSmRow(const SweepRow& row) { return row.techniques == std::vector<std::string>{"sm"} && !row.passes; }
@@ -62,20 +63,17 @@ json optionals(const std::vector<std::optional<double>>& values) {
 
 }  // namespace
 
-double recordFrameMs(const json& record) {
-  return record.at("gbuffer_ms").get<double>() + times(record).at("total").get<double>();
-}
-
-SweepTable buildSweepTable(const SweepSpec& spec, const SweepPlan& plan, const std::map<std::size_t, json>& records) {
+SweepTable buildSweepTable(const SweepSpec& spec, const SweepPlan& plan, const std::map<std::size_t, Record>& records) {
   SweepTable table;
   table.name = spec.name;
   table.title = spec.title;
   table.citation = spec.citation;
   table.note = spec.note;
-  table.unit = measureUnit(spec.measure);
+  table.unit = std::string(spec.measure->unit());
+  table.digits = spec.measure->digits;
   for (const auto& column : spec.columns) table.columns.push_back(column.label);
   for (const auto& [cell, record] : records) {
-    const std::string backend = record.at("backend").get<std::string>();
+    const std::string& backend = record.backend;
     if (!table.backend.empty() && table.backend != backend)
       throw std::logic_error("buildSweepTable: records of several backends (" + table.backend + ", " + backend + ")");
     table.backend = backend;
@@ -118,8 +116,8 @@ SweepTable buildSweepTable(const SweepSpec& spec, const SweepPlan& plan, const s
       const auto& base = plan.entries[*baseline][c];
       const bool sameFrame = !ours.empty() && !base.empty() &&
                              plan.cells[ours.front()].frameKey() == plan.cells[base.front()].frameKey();
-      row.oursRatio.push_back(sameFrame ? costRatio(row.ours[c], table.rows[*baseline].ours[c], spec.measure) : std::nullopt);
-      row.paperRatio.push_back(costRatio(row.paper[c], table.rows[*baseline].paper[c], spec.measure));
+      row.oursRatio.push_back(sameFrame ? costRatio(row.ours[c], table.rows[*baseline].ours[c], *spec.measure) : std::nullopt);
+      row.paperRatio.push_back(costRatio(row.paper[c], table.rows[*baseline].paper[c], *spec.measure));
     }
   }
   return table;
@@ -154,7 +152,7 @@ std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& heade
     if (groups) md << " " << (r == 0 || row.group != lastGroup ? row.group : "") << " |";
     lastGroup = row.group;
     md << " " << row.label << (row.notMeasured.empty() ? "" : " †") << " |";
-    for (std::size_t c = 0; c < table.columns.size(); ++c) md << " " << number(row.ours[c], 2) << " | " << number(row.paper[c], 2) << " |";
+    for (std::size_t c = 0; c < table.columns.size(); ++c) md << " " << number(row.ours[c], table.digits) << " | " << number(row.paper[c], table.digits) << " |";
     if (table.hasRatios)
       for (std::size_t c = 0; c < table.columns.size(); ++c)
         md << " " << number(row.oursRatio[c], 2) << " | " << number(row.paperRatio[c], 2) << " |";

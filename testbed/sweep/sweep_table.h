@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "testbed/harness/record.h"
 #include "testbed/sweep/sweep_plan.h"
 #include "testbed/sweep/sweep_spec.h"
 
@@ -23,6 +24,7 @@ struct SweepTable {
   std::string name, title, citation, note, unit, backend;
   std::vector<std::string> columns;
   std::vector<SweepTableRow> rows;
+  int digits = 2;          // decimals of the measure (the metric table's)
   bool hasRatios = false;  // false when the table has no `sm` row to divide by
 };
 
@@ -32,14 +34,10 @@ using SweepHeader = std::vector<std::pair<std::string, std::string>>;
 // `records`: cell index → record, all of one backend. Cells without a record read as
 // missing ("—"). Throws InputError naming the spec's row when a row's pass is unknown.
 SweepTable buildSweepTable(const SweepSpec& spec, const SweepPlan& plan,
-                           const std::map<std::size_t, nlohmann::json>& records);
+                           const std::map<std::size_t, Record>& records);
 
 std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& header);
 // The same data for scripts/sweep_plot.py.
 nlohmann::json sweepTableJson(const SweepTable& table, const SweepHeader& header);
-
-// The whole frame in ms from a record: the G-buffer pass plus every pass of the
-// technique, in the measure the record's "timing" names (README "Record").
-double recordFrameMs(const nlohmann::json& record);
 
 }  // namespace testbed

@@ -152,10 +152,15 @@ TEST(SweepShard, BadShardsAreRejected) {
   EXPECT_EQ(parseShard("2/3").text(), "2/3");
 }
 
-json fakeRecord(const SweepCell& cell, double ms, double gbuffer, std::uint64_t bytes) {
-  return {{"technique", cell.technique}, {"backend", "fake"}, {"timing", "wall"}, {"gbuffer_ms", gbuffer},
-          {"wall_ms", {{"total", ms}, {"passes", {{"shadow-map", ms / 2}, {"visibility", ms / 2}}}}},
-          {"gpu_ms", {{"total", 0.0}, {"passes", json::object()}}}, {"memory_bytes", bytes}};
+Record fakeRecord(const SweepCell& cell, double ms, double gbuffer, std::uint64_t bytes) {
+  Record r;
+  r.technique = cell.technique;
+  r.backend = "fake";
+  r.timing = TimingSource::Wall;
+  r.gbufferMs = gbuffer;
+  r.wall = {ms, {{"shadow-map", ms / 2}, {"visibility", ms / 2}}};
+  r.memoryBytes = bytes;
+  return r;
 }
 
 TEST(SweepTable, MeansRatiosAndPasses) {
@@ -166,7 +171,7 @@ TEST(SweepTable, MeansRatiosAndPasses) {
                               {"not_measured_columns", {1}}, {"paper", {1, 1, 1}}});
   const SweepSpec spec = parseSweepSpec(document, kSpecFile);
   const SweepPlan plan = planSweep(spec, {});
-  std::map<std::size_t, json> records;
+  std::map<std::size_t, Record> records;
   const std::map<std::string, double> ms = {{"sm", 2}, {"vsm", 4}, {"esm", 8}, {"pcf", 6}, {"groundtruth", 20}};
   for (std::size_t i = 0; i < plan.cells.size(); ++i) records[i] = fakeRecord(plan.cells[i], ms.at(plan.cells[i].technique), 1, 1 << 20);
   const SweepTable table = buildSweepTable(spec, plan, records);

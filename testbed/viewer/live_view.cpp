@@ -7,6 +7,7 @@
 
 #include "groundtruth/shadow_volumes.h"
 #include "testbed/core/error.h"
+#include "testbed/harness/record.h"
 
 namespace testbed::viewer {
 namespace {
@@ -154,8 +155,8 @@ nlohmann::json LiveView::record() {
   run.times = lastFrame_.times;
   run.cpuMs = lastFrame_.cpuMs;
   run.memoryBytes = memoryBytes();
-  nlohmann::json record = makeRecord(run, *runner_, backend_);
-  record["error"] = toJson(errorMetrics());
+  Record record = makeRecord(run, *runner_, backend_);
+  record.error = errorMetrics();
   return record;
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "testbed/harness/frame_runner.h"
+#include "testbed/harness/timing.h"
 #include "testbed/metrics/metrics.h"
 
 namespace testbed::viewer {

@@ -1,0 +1,143 @@
+#include "testbed/harness/metric_table.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <vector>
+
+#include "testbed/harness/record.h"
+
+namespace testbed {
+namespace {
+
+using Value = std::optional<double>;
+
+Value finite(double value) { return std::isfinite(value) ? Value(value) : std::nullopt; }
+
+// The technique's time and the whole frame's (G-buffer added), in the record's measure.
+double techniqueMs(const Record& r) { return r.timed().totalMs; }
+double wholeFrameMs(const Record& r) { return r.gbufferMs + r.timed().totalMs; }
+
+Value ratio(double value, double baseline) { return baseline > 0 ? finite(value / baseline) : std::nullopt; }
+
+template <double ErrorMetrics::*Member>
+Value errorValue(const Record& r, const Record*) {
+  return r.error ? Value((*r.error).*Member) : std::nullopt;
+}
+template <double ErrorMetrics::*Member>
+void storeError(Record& r, double value) {
+  if (!r.error) r.error.emplace();
+  (*r.error).*Member = value;
+}
+
+constexpr unsigned kNone = 0;
+
+// Table order is report.md's column order and the order of check's findings.
+const std::vector<Metric> kTable = {
+    {"gpu_ms.total", "/gpu_ms/total", "GPU ms (queries)", "", " ms", 2, CheckRule::None, 0, Better::Lower,
+     kReportColumn | kCounter, false, false, [](const Record& r, const Record*) -> Value { return r.gpu.totalMs; },
+     [](Record& r, double v) { r.gpu.totalMs = v; }},
+    {"wall_ms.total", "/wall_ms/total", "wall ms", "", " ms", 2, CheckRule::None, 0, Better::Lower,
+     kReportColumn | kCounter, false, false, [](const Record& r, const Record*) -> Value { return r.wall.totalMs; },
+     [](Record& r, double v) { r.wall.totalMs = v; }},
+    // The technique's frame in the measure the record's `timing` names.
+    {"technique_ms", "", "ms", "", " ms", 2, CheckRule::None, 0, Better::Lower, kBrief, false, false,
+     [](const Record& r, const Record*) -> Value { return techniqueMs(r); }, nullptr},
+    {"x_sm", "", "× sm", "", "x sm", 2, CheckRule::Speed, 0, Better::Lower, kReportColumn | kBrief | kCounter, false,
+     false,
+     [](const Record& r, const Record* sm) -> Value { return sm ? ratio(techniqueMs(r), techniqueMs(*sm)) : std::nullopt; },
+     nullptr},
+    // The whole frame as the papers time it: the G-buffer pass plus the technique's.
+    {"x_sm_frame", "", "× sm frame", "", "x sm frame", 2, CheckRule::None, 0, Better::Lower, kReportColumn | kCounter,
+     false, false,
+     [](const Record& r, const Record* sm) -> Value { return sm ? ratio(wholeFrameMs(r), wholeFrameMs(*sm)) : std::nullopt; },
+     nullptr},
+    {"frame_ms", "", "frame ms", "", " ms", 2, CheckRule::None, 0, Better::Lower, kSweepMeasure, false, false,
+     [](const Record& r, const Record*) -> Value { return wholeFrameMs(r); }, nullptr},
+    {"fps", "", "fps", "", " fps", 2, CheckRule::None, 0, Better::Higher, kSweepMeasure, false, false,
+     [](const Record& r, const Record*) -> Value { return wholeFrameMs(r) > 0 ? finite(1000.0 / wholeFrameMs(r)) : std::nullopt; },
+     nullptr},
+    {"cpu_ms", "/cpu_ms", "CPU ms", "", " ms", 1, CheckRule::None, 0, Better::Lower, kCounter, false, false,
+     [](const Record& r, const Record*) -> Value { return r.cpuMs; }, [](Record& r, double v) { r.cpuMs = v; }},
+    {"gbuffer_ms", "/gbuffer_ms", "G-buffer ms", "", " ms", 2, CheckRule::None, 0, Better::Lower, kNone, false, false,
+     [](const Record& r, const Record*) -> Value { return r.gbufferMs; }, [](Record& r, double v) { r.gbufferMs = v; }},
+    {"memory_bytes", "/memory_bytes", "memory bytes", "", " bytes", 0, CheckRule::Exact, 0, Better::Lower, kCounter, true,
+     false, [](const Record& r, const Record*) -> Value { return double(r.memoryBytes); },
+     [](Record& r, double v) { r.memoryBytes = std::uint64_t(v); }},
+    {"memory_kib", "", "memory KiB", "", " KiB", 0, CheckRule::None, 0, Better::Lower, kReportColumn, false, false,
+     [](const Record& r, const Record*) -> Value { return double(r.memoryBytes) / 1024.0; }, nullptr},
+    {"memory_mb", "", "memory MB", "", " MB", 2, CheckRule::None, 0, Better::Lower, kSweepMeasure, false, false,
+     [](const Record& r, const Record*) -> Value { return double(r.memoryBytes) / (1024.0 * 1024.0); }, nullptr},
+    // The error block (README "Error metrics"); floors: 0.01 percentage points, 0.001 RMSE, 0.01 px.
+    {"mismatch_pct", "/error/mismatch_pct", "mismatch %", "mismatch", "%", 3, CheckRule::Error, 0.01, Better::Lower,
+     kReportColumn | kBrief, false, false, errorValue<&ErrorMetrics::mismatchPct>,
+     storeError<&ErrorMetrics::mismatchPct>},
+    {"edge_mismatch_pct", "/error/edge_mismatch_pct", "edge mismatch %", "edge mismatch", "%", 2, CheckRule::Error, 0.01,
+     Better::Lower, kReportColumn, false, false, errorValue<&ErrorMetrics::edgeMismatchPct>,
+     storeError<&ErrorMetrics::edgeMismatchPct>},
+    {"rmse", "/error/rmse", "RMSE", "RMSE", "", 4, CheckRule::Error, 0.001, Better::Lower, kReportColumn, false, false,
+     errorValue<&ErrorMetrics::rmse>, storeError<&ErrorMetrics::rmse>},
+    {"leak_pct", "/error/leak_pct", "leak %", "leak", "%", 3, CheckRule::Error, 0.01, Better::Lower,
+     kReportColumn | kBrief, false, false, errorValue<&ErrorMetrics::leakPct>, storeError<&ErrorMetrics::leakPct>},
+    {"overestimation_pct", "/error/overestimation_pct", "overestimation %", "overestimation", "%", 3, CheckRule::Error,
+     0.01, Better::Lower, kReportColumn, false, false, errorValue<&ErrorMetrics::overestimationPct>,
+     storeError<&ErrorMetrics::overestimationPct>},
+    {"boundary_px.mean", "/error/boundary_px/mean", "boundary px mean", "boundary", " px", 3, CheckRule::Error, 0.01,
+     Better::Lower, kReportColumn | kBrief, false, false, errorValue<&ErrorMetrics::boundaryMean>,
+     storeError<&ErrorMetrics::boundaryMean>},
+    {"boundary_px.p95", "/error/boundary_px/p95", "boundary px p95", "boundary p95", " px", 3, CheckRule::None, 0,
+     Better::Lower, kReportColumn, false, false, errorValue<&ErrorMetrics::boundaryP95>,
+     storeError<&ErrorMetrics::boundaryP95>},
+    {"soft_rmse", "/error/soft_rmse", "soft RMSE", "soft RMSE", "", 4, CheckRule::Error, 0.001, Better::Lower,
+     kReportColumn, false, true,
+     [](const Record& r, const Record*) -> Value { return r.error ? r.error->softRmse : std::nullopt; },
+     [](Record& r, double v) {
+       if (!r.error) r.error.emplace();
+       r.error->softRmse = v;
+     }},
+};
+
+}  // namespace
+
+std::string_view Metric::unit() const {
+  const auto start = suffix.find_first_not_of(' ');
+  return start == std::string_view::npos ? std::string_view{} : suffix.substr(start);
+}
+
+std::span<const Metric> metricTable() { return kTable; }
+
+const Metric* findMetric(std::string_view name, MetricUse use) {
+  for (const Metric& m : kTable)
+    if (m.name == name && m.shownIn(use)) return &m;
+  return nullptr;
+}
+
+const Metric& metric(std::string_view name) {
+  for (const Metric& m : kTable)
+    if (m.name == name) return m;
+  throw std::logic_error("no metric '" + std::string(name) + "' in the metric table");
+}
+
+std::string formatFixed(std::optional<double> value, int digits) {
+  if (!value || !std::isfinite(*value)) return "–";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", digits, *value);
+  return text;
+}
+
+std::string briefSummary(const Record& record, const Record* sm, std::string_view separator) {
+  std::string line;
+  for (const Metric& m : kTable) {
+    if (!m.shownIn(kBrief)) continue;
+    const Value v = m.value(record, sm);
+    if (!v) continue;
+    char number[32];
+    std::snprintf(number, sizeof number, "%.3g", *v);
+    if (!line.empty()) line += separator;
+    if (!m.brief.empty()) line.append(m.brief).append(" ");
+    line.append(number).append(m.suffix);
+  }
+  return line;
+}
+
+}  // namespace testbed

@@ -1,0 +1,82 @@
+#include "testbed/harness/metric_table.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "testbed/harness/record.h"
+
+namespace testbed {
+namespace {
+
+Record timed(const std::string& technique, double wallMs, double gbufferMs) {
+  Record r;
+  r.technique = technique;
+  r.timing = TimingSource::Wall;
+  r.wall.totalMs = wallMs;
+  r.gbufferMs = gbufferMs;
+  r.memoryBytes = 3 << 20;
+  r.error = ErrorMetrics{};
+  r.error->mismatchPct = 0.125;
+  return r;
+}
+
+TEST(MetricTable, NamesAndPathsAreUnique) {
+  std::set<std::string_view> names, paths;
+  for (const Metric& m : metricTable()) {
+    EXPECT_TRUE(names.insert(m.name).second) << m.name;
+    if (!m.path.empty()) EXPECT_TRUE(paths.insert(m.path).second) << m.path;
+    EXPECT_EQ(m.path.empty(), m.store == nullptr) << m.name << ": a stored metric is read back, a derived one not";
+    if (m.check == CheckRule::Error) EXPECT_GT(m.floor, 0) << m.name;
+  }
+}
+
+// Each stored metric sits at its path in a written record, and reads back to its value.
+TEST(MetricTable, StoredMetricsAreWhereTheirPathSays) {
+  Record r = timed("pcf", 12.5, 1.5);
+  r.gpu.totalMs = 0.75;
+  r.cpuMs = 20;
+  r.error->softRmse = 0.0625;
+  r.error->boundaryP95 = 4;
+  const nlohmann::json j = r;
+  const Record back = j.get<Record>();
+  for (const Metric& m : metricTable()) {
+    if (m.path.empty()) continue;
+    SCOPED_TRACE(std::string(m.name));
+    const nlohmann::json& at = j.at(nlohmann::json::json_pointer(std::string(m.path)));
+    EXPECT_EQ(at.get<double>(), *m.value(r, nullptr));
+    EXPECT_EQ(at.is_number_integer(), m.integer);
+    EXPECT_EQ(m.value(back, nullptr), m.value(r, nullptr));
+  }
+}
+
+TEST(MetricTable, RatiosAreAgainstSmAndTheWholeFrame) {
+  const Record sm = timed("sm", 10, 10), smsr = timed("smsr", 30, 10);
+  EXPECT_EQ(*metric("x_sm").value(smsr, &sm), 3);
+  EXPECT_EQ(*metric("x_sm_frame").value(smsr, &sm), 2);  // (10 + 30) / (10 + 10)
+  EXPECT_FALSE(metric("x_sm").value(smsr, nullptr));
+  const Record zero = timed("sm", 0, 10);
+  EXPECT_FALSE(metric("x_sm").value(smsr, &zero));  // sm's 0 is not a measurement
+  EXPECT_EQ(*metric("frame_ms").value(smsr, nullptr), 40);
+  EXPECT_EQ(*metric("fps").value(smsr, nullptr), 25);
+  EXPECT_EQ(metric("fps").better, Better::Higher);
+  EXPECT_EQ(*metric("memory_mb").value(smsr, nullptr), 3);
+  Record none = smsr;
+  none.error.reset();
+  EXPECT_FALSE(metric("mismatch_pct").value(none, nullptr));
+  EXPECT_THROW(metric("joules"), std::logic_error);
+  EXPECT_EQ(findMetric("fps", kSweepMeasure), &metric("fps"));
+  EXPECT_EQ(findMetric("rmse", kSweepMeasure), nullptr);
+  EXPECT_EQ(metric("memory_mb").unit(), "MB");
+}
+
+TEST(MetricTable, BriefSummaryNamesTheBriefMetrics) {
+  const Record sm = timed("sm", 10, 10), smsr = timed("smsr", 15, 10);
+  EXPECT_EQ(briefSummary(smsr, &sm, ", "), "15 ms, 1.5x sm, mismatch 0.125%, leak 0%, boundary 0 px");
+  EXPECT_EQ(briefSummary(smsr, nullptr, ", "), "15 ms, mismatch 0.125%, leak 0%, boundary 0 px");
+  EXPECT_EQ(formatFixed(std::nullopt, 2), "–");
+  EXPECT_EQ(formatFixed(2.0 / 3.0, 3), "0.667");
+}
+
+}  // namespace
+}  // namespace testbed

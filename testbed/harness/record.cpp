@@ -1,0 +1,244 @@
+#include "testbed/harness/record.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "testbed/core/error.h"
+#include "testbed/harness/metric_table.h"
+#include "testbed/render/shadow_map_pass.h"
+
+namespace testbed {
+namespace {
+
+using nlohmann::json;
+
+// A field that is missing or mistyped; `field` is its path in the record ("error.rmse").
+struct BadField {
+  std::string field, what;
+};
+
+std::string describe(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+// A JSON value and its path in the record, for messages.
+struct Reader {
+  const json& value;
+  std::string path;
+
+  Reader(const json& v, std::string p) : value(v), path(std::move(p)) {}
+
+  std::string at(std::string_view key) const { return path.empty() ? std::string(key) : path + "." + std::string(key); }
+  [[noreturn]] void fail(const std::string& what) const { throw BadField{path, what}; }
+  bool has(std::string_view key) const { return value.is_object() && value.contains(key); }
+  Reader operator[](std::string_view key) const {
+    if (!value.is_object()) fail("expected an object");
+    const auto it = value.find(key);
+    if (it == value.end()) throw BadField{at(key), "missing"};
+    return {*it, at(key)};
+  }
+  std::string text() const {
+    if (!value.is_string()) fail("expected a string");
+    return value.get<std::string>();
+  }
+  double number() const {
+    if (!value.is_number()) fail("expected a number");
+    return value.get<double>();
+  }
+  // Times, error metrics and distances are measured magnitudes: a negative one is a
+  // corrupt record, not a huge improvement.
+  double magnitude() const {
+    const double v = number();
+    if (!(v >= 0)) fail("expected a non-negative number, got " + describe(v));
+    return v;
+  }
+  std::uint64_t count() const {
+    // A parsed file holds unsigned numbers; a record built in code may hold signed ones.
+    if (!value.is_number_unsigned() && !(value.is_number_integer() && value.get<std::int64_t>() >= 0))
+      fail("expected a non-negative integer");
+    return value.get<std::uint64_t>();
+  }
+  bool boolean() const {
+    if (!value.is_boolean()) fail("expected true or false");
+    return value.get<bool>();
+  }
+  template <std::size_t N>
+  std::array<double, N> numbers() const {
+    if (!value.is_array() || value.size() != N) fail("expected an array of " + std::to_string(N) + " numbers");
+    std::array<double, N> out{};
+    for (std::size_t i = 0; i < N; ++i) out[i] = Reader{value[i], path + "[" + std::to_string(i) + "]"}.number();
+    return out;
+  }
+};
+
+// The value at a metric's JSON pointer ("/error/boundary_px/mean"), its path in messages.
+Reader follow(const Reader& at, std::string_view pointer) {
+  if (pointer.empty()) return at;
+  const std::size_t slash = std::min(pointer.find('/', 1), pointer.size());
+  return follow(at[pointer.substr(1, slash - 1)], pointer.substr(slash));
+}
+
+bool inErrorBlock(const Metric& m) { return m.path.starts_with("/error/"); }
+
+json passesJson(const PassesRecord& passes) {
+  json out = json::object();
+  for (const auto& [name, ms] : passes.passesMs) out[name] = ms;
+  return out;
+}
+
+PassesRecord readPasses(const Reader& times) {
+  PassesRecord out;
+  const Reader passes = times["passes"];
+  if (!passes.value.is_object()) passes.fail("expected an object of pass times");
+  for (const auto& [name, ms] : passes.value.items()) out.passesMs[name] = passes[name].magnitude();
+  return out;  // totalMs: the metric table's
+}
+
+LightRecord readLight(const Reader& r) {
+  LightRecord l;
+  l.type = r["type"].text();
+  l.eye = r["eye"].numbers<3>();
+  l.nearPlane = r["near"].number();
+  l.farPlane = r["far"].number();
+  if (r.has("fov")) l.fov = r["fov"].number();
+  if (r.has("extent")) l.extent = r["extent"].number();
+  l.fitted = r["fitted"].boolean();
+  l.depthStepWorld = r["depth_step_world"].numbers<2>();
+  l.texelWorld = r["texel_world"].numbers<2>();
+  if (r.has("offset_world")) l.offsetWorld = r["offset_world"].numbers<2>();
+  return l;
+}
+
+Record read(const Reader& r) {
+  if (!r.value.is_object()) r.fail("expected an object (a record)");
+  Record out;
+  out.technique = r["technique"].text();
+  out.scene = r["scene"].text();
+  const Reader size = r["size"];
+  if (!size.value.is_array() || size.value.size() != 2 || !size.value[0].is_number_integer() ||
+      !size.value[1].is_number_integer())
+    size.fail("expected [width, height]");
+  out.width = size.value[0].get<int>();
+  out.height = size.value[1].get<int>();
+  out.shadowMap = int(r["shadow_map"].count());
+  out.depthFormat = r["depth_format"].text();
+  const Reader params = r["params"];
+  if (!params.value.is_object()) params.fail("expected an object");
+  out.params = params.value;
+  out.backend = r["backend"].text();
+  const std::string timing = r["timing"].text();
+  if (timing != "gpu" && timing != "wall") r["timing"].fail("expected \"gpu\" or \"wall\"");
+  out.timing = timing == "wall" ? TimingSource::Wall : TimingSource::Gpu;
+  out.gpu = readPasses(r["gpu_ms"]);
+  out.wall = readPasses(r["wall_ms"]);
+  out.repeat = int(r["repeat"].count());
+  out.triangles = r["triangles"].count();
+  out.light = readLight(r["light"]);
+  const Reader error = r["error"];
+  if (!error.value.is_null() && !error.value.is_object()) error.fail("expected an object or null");
+  if (r.has("cell")) out.cell = std::size_t(r["cell"].count());
+  for (const Metric& m : metricTable()) {
+    if (m.path.empty() || (inErrorBlock(m) && error.value.is_null())) continue;
+    const Reader value = follow(r, m.path);
+    if (m.nullable && value.value.is_null()) continue;
+    m.store(out, m.integer ? double(value.count()) : value.magnitude());
+  }
+  if (!error.value.is_null() && !out.error) out.error.emplace();  // an error block of no metric: impossible today
+  return out;
+}
+
+}  // namespace
+
+Record makeRecord(const TechniqueRun& run, const FrameRunner& runner, const std::string& backend) {
+  const RenderSettings& s = runner.settings();
+  Record r;
+  r.technique = run.id;
+  r.scene = runner.scene().name;
+  r.width = s.size.x;
+  r.height = s.size.y;
+  r.shadowMap = s.shadowMapSize;
+  r.depthFormat = depthFormatName(s.depthFormat);
+  r.params = run.params;
+  for (const auto& name : run.times.order) {
+    r.gpu.passesMs[name] = run.times.passMs.at(name);
+    r.wall.passesMs[name] = run.times.wallPassMs.at(name);
+  }
+  r.gpu.totalMs = run.times.totalMs;
+  r.wall.totalMs = run.times.wallTotalMs;
+  r.timing = timingSourceFor(backend);
+  r.cpuMs = run.cpuMs;
+  r.gbufferMs = frameTimeMs(runner.gbufferTimes(), r.timing);
+  r.repeat = s.repeat;
+  r.triangles = runner.triangleCount();
+  r.memoryBytes = run.memoryBytes;
+  r.light = lightSetupRecord(runner.light(), s.shadowMapSize, s.depthFormat, run.params).get<LightRecord>();
+  r.backend = backend;
+  return r;
+}
+
+double frameTimeMs(const Record& record) { return record.timed().totalMs; }
+
+Record readRecord(const json& value, const std::string& where) {
+  try {
+    return read(Reader{value, ""});
+  } catch (const BadField& bad) {
+    throw InputError(where + (bad.field.empty() ? "" : "." + bad.field) + ": " + bad.what);
+  }
+}
+
+void from_json(const json& value, Record& record) {
+  try {
+    record = read(Reader{value, ""});
+  } catch (const BadField& bad) {
+    throw InputError((bad.field.empty() ? "record" : bad.field) + ": " + bad.what);
+  }
+}
+
+void to_json(json& out, const LightRecord& l) {
+  out = {{"type", l.type},
+         {"eye", json::array({l.eye[0], l.eye[1], l.eye[2]})},
+         {"near", l.nearPlane},
+         {"far", l.farPlane},
+         {"fitted", l.fitted},
+         {"depth_step_world", json::array({l.depthStepWorld[0], l.depthStepWorld[1]})},
+         {"texel_world", json::array({l.texelWorld[0], l.texelWorld[1]})}};
+  if (l.fov) out["fov"] = *l.fov;
+  if (l.extent) out["extent"] = *l.extent;
+  if (l.offsetWorld) out["offset_world"] = json::array({(*l.offsetWorld)[0], (*l.offsetWorld)[1]});
+}
+
+void from_json(const json& value, LightRecord& light) {
+  try {
+    light = readLight(Reader{value, ""});
+  } catch (const BadField& bad) {
+    throw InputError("light" + (bad.field.empty() ? "" : "." + bad.field) + ": " + bad.what);
+  }
+}
+
+void to_json(json& out, const Record& r) {
+  out = {{"technique", r.technique},
+         {"scene", r.scene},
+         {"size", json::array({r.width, r.height})},
+         {"shadow_map", r.shadowMap},
+         {"depth_format", r.depthFormat},
+         {"params", r.params},
+         {"gpu_ms", {{"passes", passesJson(r.gpu)}}},
+         {"wall_ms", {{"passes", passesJson(r.wall)}}},
+         {"timing", std::string(timingName(r.timing))},
+         {"repeat", r.repeat},
+         {"triangles", r.triangles},
+         {"light", r.light},
+         {"backend", r.backend},
+         {"error", nullptr}};
+  if (r.cell) out["cell"] = *r.cell;
+  for (const Metric& m : metricTable()) {
+    if (m.path.empty() || (inErrorBlock(m) && !r.error)) continue;
+    const std::optional<double> v = m.value(r, nullptr);
+    out[json::json_pointer(std::string(m.path))] =
+        !v ? json(nullptr) : m.integer ? json(std::uint64_t(*v)) : json(*v);
+  }
+}
+
+}  // namespace testbed

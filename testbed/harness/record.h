@@ -1,0 +1,73 @@
+#pragma once
+// The record of one run (README "Record"): what `render`, `compare`, `sweep` and the viewer
+// write as T.json, metrics.json and records.json, and what `check`, `merge` and the reports
+// read back. One typed struct, written and read by nlohmann's to_json / from_json; the
+// metrics in it are placed and validated by the metric table (harness/metric_table.h).
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "testbed/harness/frame_runner.h"
+#include "testbed/harness/timing.h"
+#include "testbed/metrics/metrics.h"
+
+namespace testbed {
+
+// One measure (GPU queries or wall time) of a run: per pass and the total of the passes.
+struct PassesRecord {
+  double totalMs = 0;                       // the metric table's gpu_ms.total / wall_ms.total
+  std::map<std::string, double> passesMs;  // by pass name
+};
+
+// The "light" block: the light's transforms and their size in world units at the near and
+// far plane (render/shadow_map_pass.h, lightSetupRecord).
+struct LightRecord {
+  std::string type;  // "spot" or "directional"
+  std::array<double, 3> eye{};
+  double nearPlane = 0, farPlane = 0;
+  std::optional<double> fov, extent;  // a spot light's fov, a directional light's extent
+  bool fitted = false;
+  std::array<double, 2> depthStepWorld{}, texelWorld{};
+  std::optional<std::array<double, 2>> offsetWorld;  // techniques with a polygon offset
+};
+
+struct Record {
+  std::string technique, scene;
+  int width = 0, height = 0;
+  int shadowMap = 0;
+  std::string depthFormat;  // "16", "24", "32f"
+  nlohmann::json params = nlohmann::json::object();  // the technique's own parameters
+  PassesRecord gpu, wall;
+  TimingSource timing = TimingSource::Gpu;  // which of gpu and wall is the frame's time
+  double cpuMs = 0, gbufferMs = 0;
+  int repeat = 1;
+  std::uint64_t triangles = 0, memoryBytes = 0;
+  LightRecord light;
+  std::string backend;
+  std::optional<ErrorMetrics> error;  // null until compared with the ground truth
+  std::optional<std::size_t> cell;    // a sweep's cell index (records.json only)
+
+  const PassesRecord& timed() const { return timing == TimingSource::Wall ? wall : gpu; }
+};
+
+// The record of a run on `runner`, `error` empty.
+Record makeRecord(const TechniqueRun& run, const FrameRunner& runner, const std::string& backend);
+
+// The technique's frame time in the measure its `timing` names (no G-buffer).
+double frameTimeMs(const Record& record);
+
+// Reads a record, checking every field: throws InputError "<where>.<field>: <what>", e.g.
+// "runs/metrics.json: [2].error.rmse: missing" for where = "runs/metrics.json: [2]".
+Record readRecord(const nlohmann::json& json, const std::string& where);
+
+void to_json(nlohmann::json& json, const Record& record);
+// Throws InputError "<field>: <what>" (readRecord adds where the record came from).
+void from_json(const nlohmann::json& json, Record& record);
+void to_json(nlohmann::json& json, const LightRecord& light);
+void from_json(const nlohmann::json& json, LightRecord& light);
+
+}  // namespace testbed

@@ -1,0 +1,143 @@
+#include "testbed/harness/record.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "testbed/core/error.h"
+#include "testbed/harness/metric_table.h"
+
+namespace testbed {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+std::string readText(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Every metrics.json and records.json committed under `folder`.
+std::vector<fs::path> recordFiles(const fs::path& folder) {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::recursive_directory_iterator(folder))
+    if (entry.path().filename() == "metrics.json" || entry.path().filename() == "records.json")
+      files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// The files of today read into typed records and written again are the same bytes: same
+// keys, same order, same number formatting.
+TEST(Record, CommittedRecordsRoundTripByteForByte) {
+  std::size_t records = 0;
+  for (const char* folder : {"tests/baselines", "results"}) {
+    const auto files = recordFiles(fs::path(TESTBED_SOURCE_DIR) / folder);
+    ASSERT_FALSE(files.empty()) << folder;
+    for (const auto& file : files) {
+      SCOPED_TRACE(file.string());
+      const std::string text = readText(file);
+      const json parsed = json::parse(text);
+      std::vector<Record> typed;
+      for (std::size_t i = 0; i < parsed.size(); ++i) typed.push_back(readRecord(parsed[i], "[" + std::to_string(i) + "]"));
+      EXPECT_EQ(json(typed).dump(2) + "\n", text);
+      records += typed.size();
+    }
+  }
+  EXPECT_GT(records, 100u);
+}
+
+json baselineRecord(const std::string& technique) {
+  const json all = json::parse(readText(fs::path(TESTBED_SOURCE_DIR) / "tests/baselines/fence/metrics.json"));
+  for (const auto& r : all)
+    if (r["technique"] == technique) return r;
+  throw std::runtime_error("no " + technique + " in tests/baselines/fence");
+}
+
+TEST(Record, TypedFieldsHoldTheFile) {
+  const json j = baselineRecord("pcf");
+  const Record r = j.get<Record>();
+  EXPECT_EQ(r.technique, "pcf");
+  EXPECT_EQ(r.width, j["size"][0].get<int>());
+  EXPECT_EQ(r.timing == TimingSource::Wall ? "wall" : "gpu", j["timing"].get<std::string>());
+  EXPECT_EQ(frameTimeMs(r), j[r.timing == TimingSource::Wall ? "wall_ms" : "gpu_ms"]["total"].get<double>());
+  EXPECT_EQ(r.memoryBytes, j["memory_bytes"].get<std::uint64_t>());
+  ASSERT_TRUE(r.error.has_value());
+  EXPECT_EQ(r.error->boundaryMean, j["error"]["boundary_px"]["mean"].get<double>());
+  EXPECT_FALSE(r.error->softRmse.has_value());  // null in the file
+  EXPECT_EQ(r.light.offsetWorld.has_value(), j["light"].contains("offset_world"));
+  EXPECT_EQ(r.params, j["params"]);
+}
+
+TEST(Record, ErrorBlockHasExactlyTheContractKeys) {
+  Record r = baselineRecord("sm").get<Record>();
+  r.error = ErrorMetrics{};
+  r.error->boundaryMean = 2.5;
+  json j = r;
+  std::set<std::string> keys, boundaryKeys;
+  for (const auto& item : j.at("error").items()) keys.insert(item.key());
+  EXPECT_EQ(keys, (std::set<std::string>{"mismatch_pct", "edge_mismatch_pct", "rmse", "leak_pct", "overestimation_pct",
+                                         "boundary_px", "soft_rmse"}));
+  for (const auto& item : j.at("error").at("boundary_px").items()) boundaryKeys.insert(item.key());
+  EXPECT_EQ(boundaryKeys, (std::set<std::string>{"mean", "p95"}));
+  EXPECT_EQ(j["error"]["boundary_px"]["mean"].get<double>(), 2.5);
+  EXPECT_TRUE(j["error"]["soft_rmse"].is_null());
+  r.error->softRmse = 0.25;
+  EXPECT_EQ(json(r)["error"]["soft_rmse"].get<double>(), 0.25);
+  r.error.reset();
+  EXPECT_TRUE(json(r)["error"].is_null());
+  EXPECT_FALSE(json(r).get<Record>().error.has_value());
+}
+
+TEST(Record, MalformedRecordsNameTheField) {
+  auto message = [](const json& j) {
+    try {
+      readRecord(j, "runs/x.json: [4]");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const json good = baselineRecord("pcf");
+  EXPECT_EQ(message(good), "no error");
+  json r = good;
+  r.erase("scene");
+  EXPECT_EQ(message(r), "runs/x.json: [4].scene: missing");
+  r = good;
+  r["gpu_ms"]["passes"]["shadow-map"] = "slow";
+  EXPECT_EQ(message(r), "runs/x.json: [4].gpu_ms.passes.shadow-map: expected a number");
+  r = good;
+  r["error"]["boundary_px"]["p95"] = nullptr;  // how a NaN is written
+  EXPECT_EQ(message(r), "runs/x.json: [4].error.boundary_px.p95: expected a number");
+  r = good;
+  r["cpu_ms"] = -2.0;
+  EXPECT_EQ(message(r), "runs/x.json: [4].cpu_ms: expected a non-negative number, got -2");
+  r = good;
+  r["light"]["eye"] = {1.0, 2.0};
+  EXPECT_EQ(message(r), "runs/x.json: [4].light.eye: expected an array of 3 numbers");
+  r = good;
+  r["size"] = {160};
+  EXPECT_EQ(message(r), "runs/x.json: [4].size: expected [width, height]");
+  r = good;
+  r["triangles"] = 1.5;
+  EXPECT_EQ(message(r), "runs/x.json: [4].triangles: expected a non-negative integer");
+  EXPECT_EQ(message(json::array()), "runs/x.json: [4]: expected an object (a record)");
+  // from_json (j.get<Record>()) says the same without the file.
+  r = good;
+  r["error"].erase("rmse");
+  try {
+    (void)r.get<Record>();
+    ADD_FAILURE() << "accepted a record without error.rmse";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "error.rmse: missing");
+  }
+}
+
+}  // namespace
+}  // namespace testbed

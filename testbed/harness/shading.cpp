@@ -1,0 +1,32 @@
+#include "testbed/harness/shading.h"
+
+#include <algorithm>
+
+#include <glm/glm.hpp>
+
+namespace testbed {
+
+ImageF shadeVisibility(const ImageF& positions, const ImageF& normals, const LightTransforms& light,
+                       const ImageF& visibility) {
+  constexpr float kAmbient = 0.15f, kAlbedo = 0.85f;
+  const glm::vec3 background(0.18f, 0.2f, 0.24f);
+  ImageF image;
+  image.width = visibility.width;
+  image.height = visibility.height;
+  image.channels = 3;
+  image.pixels.resize(std::size_t(image.width) * image.height * 3);
+  for (std::size_t i = 0; i < std::size_t(image.width) * image.height; ++i) {
+    glm::vec3 color = background;
+    if (positions.pixels[i * 4 + 3] >= 0.5f) {
+      const glm::vec3 p(positions.pixels[i * 4], positions.pixels[i * 4 + 1], positions.pixels[i * 4 + 2]);
+      const glm::vec3 n(normals.pixels[i * 3], normals.pixels[i * 3 + 1], normals.pixels[i * 3 + 2]);
+      const glm::vec3 l = light.orthographic ? -light.direction : glm::normalize(light.position - p);
+      const float v = std::clamp(visibility.pixels[i], 0.0f, 1.0f);
+      color = glm::vec3(kAlbedo * (kAmbient + (1.0f - kAmbient) * std::max(glm::dot(n, l), 0.0f) * v));
+    }
+    for (int c = 0; c < 3; ++c) image.pixels[i * 3 + c] = color[c];
+  }
+  return image;
+}
+
+}  // namespace testbed

@@ -1,0 +1,31 @@
+// A record from real frames: with --repeat > 1 each measure's total is the sum of its
+// passes as written (README "Record"), and the record reads back to the same bytes.
+#include <gtest/gtest.h>
+
+#include "testbed/harness/record.h"
+#include "tests/gl_fixture.h"
+#include "tests/test_scenes.h"
+
+namespace testbed::test {
+namespace {
+
+TEST(RecordFromFrames, TotalIsTheSumOfThePassesWithRepeat) {
+  sharedContext();
+  const Scene scene = boxOverPlane(directional({0.3f, -1.0f, 0.2f}));
+  FrameRunner runner(scene, {{64, 48}, 128, DepthFormat::D16, 5});
+  const Record record = makeRecord(runTechnique(runner, "pcf"), runner, sharedContext().description());
+  const nlohmann::json written = record;
+  EXPECT_EQ(written["repeat"], 5);
+  for (const char* measure : {"gpu_ms", "wall_ms"}) {
+    SCOPED_TRACE(measure);
+    double sum = 0;
+    for (const auto& [pass, ms] : written[measure]["passes"].items()) sum += ms.get<double>();
+    EXPECT_FALSE(written[measure]["passes"].empty());
+    EXPECT_DOUBLE_EQ(written[measure]["total"].get<double>(), sum);
+  }
+  EXPECT_EQ(readRecord(nlohmann::json::parse(written.dump(2)), "pcf.json").memoryBytes, record.memoryBytes);
+  EXPECT_EQ(nlohmann::json(readRecord(nlohmann::json::parse(written.dump(2)), "pcf.json")).dump(2), written.dump(2));
+}
+
+}  // namespace
+}  // namespace testbed::test
