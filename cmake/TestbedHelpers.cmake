@@ -27,6 +27,19 @@ function(testbed_embed_shaders target)
   target_sources(${target} PRIVATE ${outputs})
 endfunction()
 
+# testbed_set_technique_family(<target> [<family>])
+# A technique's family (`testbed list`, the records, the README table) is the name of the
+# folder that defines it, unless given: TESTBED_TECHNIQUE_FAMILY="<folder>" for its sources,
+# read by TESTBED_REGISTER_TECHNIQUE and PluginRegistrar::add<T>().
+function(testbed_set_technique_family target)
+  if(ARGC GREATER 1)
+    set(family "${ARGV1}")
+  else()
+    get_filename_component(family "${CMAKE_CURRENT_SOURCE_DIR}" NAME)
+  endif()
+  target_compile_definitions(${target} PRIVATE TESTBED_TECHNIQUE_FAMILY="${family}")
+endfunction()
+
 # testbed_add_technique(<name> SOURCES ... SHADERS ...)
 # A technique is an OBJECT library so that its static self-registration object is always
 # linked (a static archive would let the linker drop it, since nothing references it).
@@ -35,6 +48,7 @@ function(testbed_add_technique name)
   set(target technique_${name})
   add_library(${target} OBJECT ${ARG_SOURCES})
   target_link_libraries(${target} PUBLIC testbed_core)
+  testbed_set_technique_family(${target})
   if(ARG_SHADERS)
     testbed_embed_shaders(${target} FILES ${ARG_SHADERS})
   endif()
@@ -48,16 +62,17 @@ function(testbed_link_techniques exe)
   target_link_libraries(${exe} PRIVATE testbed_core testbed_groundtruth ${targets})
 endfunction()
 
-# testbed_add_plugin(<name> SOURCES ... [SHADERS ...])
+# testbed_add_plugin(<name> SOURCES ... [SHADERS ...] [FAMILY <family>])
 # An out-of-tree technique library lib<name>.so for `testbed ... --plugin` (see
 # testbed/technique/plugin.h). It compiles against testbed::plugin_api (headers and
 # definitions only) and leaves the core's symbols undefined: they bind to the `testbed`
 # executable at load time. Shader keys are paths relative to CMAKE_SOURCE_DIR; a key the
 # testbed already has keeps the testbed's text, so keep shaders in a folder of your own.
 function(testbed_add_plugin name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;SHADERS" ${ARGN})
+  cmake_parse_arguments(ARG "" "FAMILY" "SOURCES;SHADERS" ${ARGN})
   add_library(${name} MODULE ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE testbed::plugin_api)
+  testbed_set_technique_family(${name} ${ARG_FAMILY})
   if(ARG_SHADERS)
     testbed_embed_shaders(${name} FILES ${ARG_SHADERS})
   endif()

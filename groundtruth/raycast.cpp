@@ -165,20 +165,13 @@ class EmbreeScene {
 
 class RayCast final : public ShadowTechnique {
  public:
-  static const TechniqueInfo& staticInfo() {
-    static const TechniqueInfo info = [] {
-      TechniqueInfo i;
-      i.id = "raycast";
-      i.family = "groundtruth";
-      i.output = OutputKind::Hard;
-      i.citation = "Embree shadow rays (Wald et al. 2014)";
-      i.summary = "exact hard shadows: one Embree occlusion ray per receiver pixel (cross-check)";
-      return i;
-    }();
-    return info;
+  static TechniqueInfo describe() {
+    return {.id = "raycast",
+            .output = OutputKind::Hard,
+            .citation = "Embree shadow rays (Wald et al. 2014)",
+            .summary = "exact hard shadows: one Embree occlusion ray per receiver pixel (cross-check)"};
   }
 
-  const TechniqueInfo& info() const override { return staticInfo(); }
   void configure(const ParameterSet&) override {}
 
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {
@@ -283,7 +276,8 @@ class RayCast final : public ShadowTechnique {
 }  // namespace
 
 const RegisteredTechnique& rayCastGroundTruth() {
-  static const RegisteredTechnique entry{&RayCast::staticInfo(), [] { return std::make_unique<RayCast>(); }};
+  static const RegisteredTechnique entry{&keepTechniqueInfo(RayCast::describe(), TESTBED_TECHNIQUE_FAMILY),
+                                         [] { return std::make_unique<RayCast>(); }};
   return entry;
 }
 

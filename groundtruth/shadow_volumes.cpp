@@ -60,35 +60,32 @@ class ShadowVolumes final : public ShadowTechnique {
  public:
   explicit ShadowVolumes(bool area) : area_(area) {}
 
-  static const TechniqueInfo& pointInfo() {
-    static const TechniqueInfo info = [] {
-      TechniqueInfo i;
-      i.id = "groundtruth";
-      i.family = "groundtruth";
-      i.output = OutputKind::Hard;
-      i.citation = "Crow 1977; depth-fail counting: Everitt & Kilgard 2002";
-      i.summary = "exact hard shadows: stencil shadow volumes from OpenMesh silhouettes";
-      return i;
-    }();
-    return info;
+  // The area-light reference's one parameter (the point-light one has none).
+  struct AreaParameters {
+    int samples;
+    void reflect(ParameterBinder& b) {
+      b.integer("area_samples", samples, 64, 1, 4096, "point-light samples over the light's disk");
+    }
+  };
+
+  static TechniqueInfo describePoint() {
+    return {.id = "groundtruth",
+            .output = OutputKind::Hard,
+            .citation = "Crow 1977; depth-fail counting: Everitt & Kilgard 2002",
+            .summary = "exact hard shadows: stencil shadow volumes from OpenMesh silhouettes"};
   }
-  static const TechniqueInfo& areaInfo() {
-    static const TechniqueInfo info = [] {
-      TechniqueInfo i;
-      i.id = "area";
-      i.family = "groundtruth";
-      i.output = OutputKind::Filtered;
-      i.citation = "mean of point-light shadow volumes over the light's disk";
-      i.summary = "area-light reference for filtered techniques (soft_rmse)";
-      i.parameters = {ParameterSpec::integer("area_samples", 64, 1, 4096, "point-light samples over the light's disk")};
-      return i;
-    }();
-    return info;
+  static TechniqueInfo describeArea() {
+    return {.id = "area",
+            .output = OutputKind::Filtered,
+            .citation = "mean of point-light shadow volumes over the light's disk",
+            .summary = "area-light reference for filtered techniques (soft_rmse)",
+            .parameters = declaredParameters<AreaParameters>()};
   }
 
-  const TechniqueInfo& info() const override { return area_ ? areaInfo() : pointInfo(); }
-  void configure(const ParameterSet& parameters) override {
-    samples_ = area_ ? int(parameters.getInt("area_samples")) : 0;
+  void configure(const ParameterSet& values) override {
+    AreaParameters area{};
+    if (area_) bindParameters(values, area);
+    samples_ = area_ ? area.samples : 0;
   }
 
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {
@@ -215,13 +212,13 @@ class ShadowVolumes final : public ShadowTechnique {
 }  // namespace
 
 const RegisteredTechnique& shadowVolumeGroundTruth() {
-  static const RegisteredTechnique entry{&ShadowVolumes::pointInfo(),
+  static const RegisteredTechnique entry{&keepTechniqueInfo(ShadowVolumes::describePoint(), TESTBED_TECHNIQUE_FAMILY),
                                          [] { return std::make_unique<ShadowVolumes>(false); }};
   return entry;
 }
 
 const RegisteredTechnique& areaLightReference() {
-  static const RegisteredTechnique entry{&ShadowVolumes::areaInfo(),
+  static const RegisteredTechnique entry{&keepTechniqueInfo(ShadowVolumes::describeArea(), TESTBED_TECHNIQUE_FAMILY),
                                          [] { return std::make_unique<ShadowVolumes>(true); }};
   return entry;
 }

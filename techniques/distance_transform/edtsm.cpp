@@ -7,25 +7,21 @@
 
 namespace testbed::distance_transform {
 
-std::vector<ParameterSpec> EdtShadowMapping::parameters() {
+void EdtShadowMapping::Parameters::reflect(ParameterBinder& b) {
   // World-unit defaults suit the bundled scenes (objects 10–60 units across).
-  return revectorization::withCommonParameters({
-      ParameterSpec::real("penumbra", 1.0, 0.0, 1e6, "penumbra size P in world units (eq. 8)"),
-      ParameterSpec::real("filter_width", 0.5, 0.0, 1e6,
-                          "mean filter width in world units, projected per pixel (eqs. 9-10); 0: no filter"),
-      ParameterSpec::real("depth_threshold", 2.5e-3, 0.0, 1.0,
-                          "largest camera-depth difference between pixels of one surface (the paper's 2.5e-3)"),
-      ParameterSpec::integer("max_filter_radius", 15, 0, 64, "cap on the mean filter's half width, pixels"),
-  });
+  b.real("penumbra", penumbra, 1.0, 0.0, 1e6, "penumbra size P in world units (eq. 8)");
+  b.real("filter_width", filterWidth, 0.5, 0.0, 1e6,
+         "mean filter width in world units, projected per pixel (eqs. 9-10); 0: no filter");
+  b.real("depth_threshold", depthThreshold, 2.5e-3, 0.0, 1.0,
+         "largest camera-depth difference between pixels of one surface (the paper's 2.5e-3)");
+  b.integer("max_filter_radius", maxFilterRadius, 15, 0, 64, "cap on the mean filter's half width, pixels");
+  rbsm.reflect(b);
 }
 
-void EdtShadowMapping::configure(const ParameterSet& parameters) {
-  shadowMap_.configure(parameters);
-  rbsm_.configure(parameters);
-  penumbra_ = static_cast<float>(parameters.getFloat("penumbra"));
-  filterWidth_ = static_cast<float>(parameters.getFloat("filter_width"));
-  depthThreshold_ = static_cast<float>(parameters.getFloat("depth_threshold"));
-  maxFilterRadius_ = static_cast<int>(parameters.getInt("max_filter_radius"));
+void EdtShadowMapping::configure(const ParameterSet& values) {
+  bindParameters(values, parameters_);
+  shadowMap_.configure(parameters_.rbsm.shadowMap);
+  rbsm_.configure(parameters_.rbsm);
 }
 
 void EdtShadowMapping::allocate(glm::ivec2 size) {
@@ -46,7 +42,7 @@ void EdtShadowMapping::allocate(glm::ivec2 size) {
 void EdtShadowMapping::bindScreenInputs(const Program& program, const FrameInputs& in) const {
   bindReceiverInputs(program, in);
   program.set("uCameraViewProjection", in.camera.viewProjection());
-  program.set("uDepthThreshold", depthThreshold_);
+  program.set("uDepthThreshold", parameters_.depthThreshold);
 }
 
 void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
@@ -88,17 +84,17 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
     glBindTextureUnit(5, featureTransform_.nearest().id());
     penumbraProgram_.set("uHard", 4);
     penumbraProgram_.set("uNearestSeed", 5);
-    penumbraProgram_.set("uPenumbra", penumbra_);
+    penumbraProgram_.set("uPenumbra", parameters_.penumbra);
     screen_.draw(penumbraProgram_, intensity_.target, in.size);
   }
   {
     auto scope = timer.scope("mean-filter");
     bindScreenInputs(filterProgram_, in);
-    filterProgram_.set("uFilterWidth", filterWidth_);
+    filterProgram_.set("uFilterWidth", parameters_.filterWidth);
     // z_screen = 1 / (2 tan(fov_y / 2)) and projection[1][1] = 1 / tan(fov_y / 2).
     filterProgram_.set("uScreenDistance", 0.5f * in.camera.projection[1][1]);
     filterProgram_.set("uCameraPosition", glm::vec3(glm::inverse(in.camera.view)[3]));
-    filterProgram_.set("uMaxRadius", maxFilterRadius_);
+    filterProgram_.set("uMaxRadius", parameters_.maxFilterRadius);
     filterProgram_.set("uIntensity", 4);
     glClearNamedFramebufferfv(filtered_.target.id(), GL_COLOR, 0, noReceiver);
     glBindTextureUnit(4, intensity_.texture.id());
@@ -113,40 +109,31 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
 
 namespace {
 
-TechniqueInfo makeInfo(const char* id, const char* citation, const char* summary) {
-  TechniqueInfo i;
-  i.id = id;
-  i.family = "distance_transform";
-  i.output = OutputKind::Filtered;
-  i.citation = citation;
-  i.summary = summary;
-  i.parameters = EdtShadowMapping::parameters();
-  return i;
+TechniqueInfo describeEdtsm(const char* id, const char* citation, const char* summary) {
+  return {.id = id,
+          .output = OutputKind::Filtered,
+          .citation = citation,
+          .summary = summary,
+          .parameters = declaredParameters<EdtShadowMapping::Parameters>()};
 }
 
 class Edtsm final : public EdtShadowMapping {
  public:
   Edtsm() : EdtShadowMapping(false) {}
-  static const TechniqueInfo& staticInfo() {
-    static const TechniqueInfo info =
-        makeInfo("edtsm", "Macedo, Apolinário, Euclidean distance transform shadow mapping, GI 2017",
-                 "fixed-size penumbra from the exact EDT over conservative RBSM hard shadows");
-    return info;
+  static TechniqueInfo describe() {
+    return describeEdtsm("edtsm", "Macedo, Apolinário, Euclidean distance transform shadow mapping, GI 2017",
+                         "fixed-size penumbra from the exact EDT over conservative RBSM hard shadows");
   }
-  const TechniqueInfo& info() const override { return staticInfo(); }
 };
 
 class EdtsmStar final : public EdtShadowMapping {
  public:
   EdtsmStar() : EdtShadowMapping(true) {}
-  static const TechniqueInfo& staticInfo() {
-    static const TechniqueInfo info = makeInfo(
-        "edtsm-star",
-        "Macedo, Apolinário, Improved anti-aliasing for Euclidean distance transform shadow mapping",
-        "EDTSM over RBSM with the improved visibility function (less overestimation)");
-    return info;
+  static TechniqueInfo describe() {
+    return describeEdtsm("edtsm-star",
+                         "Macedo, Apolinário, Improved anti-aliasing for Euclidean distance transform shadow mapping",
+                         "EDTSM over RBSM with the improved visibility function (less overestimation)");
   }
-  const TechniqueInfo& info() const override { return staticInfo(); }
 };
 
 }  // namespace

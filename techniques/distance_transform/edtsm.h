@@ -22,7 +22,12 @@ namespace testbed::distance_transform {
 class EdtShadowMapping : public ShadowTechnique {
  public:
   // penumbra, filter_width, depth_threshold, max_filter_radius, then RBSM's parameters.
-  static std::vector<ParameterSpec> parameters();
+  struct Parameters {
+    float penumbra, filterWidth, depthThreshold;
+    int maxFilterRadius;
+    revectorization::CommonParameters rbsm;
+    void reflect(ParameterBinder& b);
+  };
 
   void configure(const ParameterSet& parameters) override;
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override;
@@ -41,8 +46,7 @@ class EdtShadowMapping : public ShadowTechnique {
   void bindScreenInputs(const Program& program, const FrameInputs& in) const;
 
   bool improved_;
-  float penumbra_ = 1.0f, filterWidth_ = 0.5f, depthThreshold_ = 2.5e-3f;
-  int maxFilterRadius_ = 15;
+  Parameters parameters_{};
   revectorization::Common rbsm_;
   ShadowMapPass shadowMap_;
   ScreenPass screen_;

@@ -10,49 +10,43 @@ namespace {
 
 class PercentageCloserFiltering final : public ShadowMapScreenTechnique {
  public:
+  struct Parameters {
+    int kernel;
+    bool bilinear;
+    float bias;
+    ShadowMapPass::Parameters shadowMap;
+    void reflect(ParameterBinder& b) {
+      // Odd so the block is centred on the receiver's texel.
+      b.integer("kernel", kernel, 3, 1, 17, "filter width k in texels (k×k taps, odd)").oddOnly();
+      b.boolean("bilinear", bilinear, false, "weight each tap bilinearly over its 4 nearest texels ((k+1)² tests)");
+      reflectShadowTestBias(b, bias);
+      shadowMap.reflect(b);
+    }
+  };
+
   PercentageCloserFiltering() : ShadowMapScreenTechnique("techniques/pcf/pcf_visibility.frag") {}
 
-  static const TechniqueInfo& staticInfo() {
-    static const TechniqueInfo info = [] {
-      TechniqueInfo i;
-      i.id = "pcf";
-      i.family = "pcf";
-      i.output = OutputKind::Filtered;
-      i.citation = "Reeves, Salesin, Cook, Rendering antialiased shadows with depth maps, SIGGRAPH 1987";
-      i.summary = "percentage-closer filtering: fraction of k×k nearest depth tests that are lit";
-      auto kernel = ParameterSpec::integer("kernel", 3, 1, 17, "filter width k in texels (k×k taps, odd)");
-      kernel.oddOnly = true;  // odd so the block is centred on the receiver's texel
-      i.parameters = {
-          kernel,
-          ParameterSpec::boolean("bilinear", false,
-                                 "weight each tap bilinearly over its 4 nearest texels ((k+1)² tests)"),
-          ParameterSpec::real("bias", 0.0, -1.0, 1.0,
-                              "constant depth bias subtracted from the receiver's light depth"),
-      };
-      for (auto& spec : ShadowMapPass::parameters()) i.parameters.push_back(spec);
-      return i;
-    }();
-    return info;
+  static TechniqueInfo describe() {
+    return {.id = "pcf",
+            .output = OutputKind::Filtered,
+            .citation = "Reeves, Salesin, Cook, Rendering antialiased shadows with depth maps, SIGGRAPH 1987",
+            .summary = "percentage-closer filtering: fraction of k×k nearest depth tests that are lit",
+            .parameters = declaredParameters<Parameters>()};
   }
 
-  const TechniqueInfo& info() const override { return staticInfo(); }
-
-  void configureOwn(const ParameterSet& parameters) override {
-    kernel_ = static_cast<int>(parameters.getInt("kernel"));
-    bilinear_ = parameters.getBool("bilinear");
-    bias_ = static_cast<float>(parameters.getFloat("bias"));
+  void configure(const ParameterSet& values) override {
+    bindParameters(values, parameters_);
+    configureShadowMap(parameters_.shadowMap);
   }
 
   void setUniforms(const Program& program) const override {
-    program.set("uBias", bias_);
-    program.set("uKernel", kernel_);
-    program.set("uBilinear", bilinear_ ? 1 : 0);
+    program.set("uBias", parameters_.bias);
+    program.set("uKernel", parameters_.kernel);
+    program.set("uBilinear", parameters_.bilinear ? 1 : 0);
   }
 
  private:
-  int kernel_ = 3;
-  bool bilinear_ = false;
-  float bias_ = 0.0f;
+  Parameters parameters_{};
 };
 
 }  // namespace

@@ -8,21 +8,30 @@ namespace {
 
 class ExponentialShadowMap final : public PrefilteredTechnique {
  public:
-  static const TechniqueInfo& staticInfo() {
-    // R32F as in the paper. exp(c) at the far plane must stay below FLT_MAX (3.4e38 =
-    // exp(88.7)), hence c ≤ 88; the paper's c = 80 gives exp(80) ≈ 5.5e34.
-    static const TechniqueInfo info = familyInfo(
-        "esm", "Annen, Mertens, Seidel, Flerackers & Kautz, Exponential shadow maps, GI 2008",
-        "exponential shadow maps: exp(c z) in R32F, Gaussian-filtered; exp(-c t) E[exp(c z)]",
-        {ParameterSpec::real("exponent", 80.0, 1.0, 88.0,
-                             "c of exp(c z); at most 88 so exp(c) fits a 32-bit float")});
-    return info;
-  }
-  const TechniqueInfo& info() const override { return staticInfo(); }
+  struct Parameters {
+    float exponent;
+    MomentsPass::Parameters moments;
+    void reflect(ParameterBinder& b) {
+      // R32F as in the paper. exp(c) at the far plane must stay below FLT_MAX (3.4e38 =
+      // exp(88.7)), hence c ≤ 88; the paper's c = 80 gives exp(80) ≈ 5.5e34.
+      b.real("exponent", exponent, 80.0, 1.0, 88.0, "c of exp(c z); at most 88 so exp(c) fits a 32-bit float");
+      moments.reflect(b);
+    }
+  };
 
-  void configure(const ParameterSet& p) override {
-    configureShared(p, MomentsFormat{GL_R32F, "encodeEsm", "visibilityEsm"},
-                    glm::vec4(float(p.getFloat("exponent")), 0, 0, 0));
+  static TechniqueInfo describe() {
+    return {.id = "esm",
+            .output = OutputKind::Filtered,
+            .citation = "Annen, Mertens, Seidel, Flerackers & Kautz, Exponential shadow maps, GI 2008",
+            .summary = "exponential shadow maps: exp(c z) in R32F, Gaussian-filtered; exp(-c t) E[exp(c z)]",
+            .parameters = declaredParameters<Parameters>()};
+  }
+
+  void configure(const ParameterSet& values) override {
+    Parameters p{};
+    bindParameters(values, p);
+    configureShared(p.moments, MomentsFormat{GL_R32F, "encodeEsm", "visibilityEsm"},
+                    glm::vec4(p.exponent, 0, 0, 0));
   }
 };
 

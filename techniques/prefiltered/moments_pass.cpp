@@ -12,18 +12,12 @@ constexpr int kMaxBlur = 15;  // blur.frag holds kMaxBlur / 2 + 1 weights
 
 }  // namespace
 
-std::vector<ParameterSpec> MomentsPass::parameters() {
-  ParameterSpec blur = ParameterSpec::integer(
-      "blur", 3, 1, kMaxBlur, "separable Gaussian kernel size in texels (odd; 3 = the papers' 3x3, 1 = no blur)");
-  blur.oddOnly = true;
-  return {blur, ParameterSpec::boolean("mips", false,
-                                       "mip-map the filtered moments and sample them trilinearly "
-                                       "(the mip chain counts in memory_bytes)")};
-}
-
-void MomentsPass::configure(const ParameterSet& parameters) {
-  blur_ = static_cast<int>(parameters.getInt("blur"));
-  mips_ = parameters.getBool("mips");
+void MomentsPass::Parameters::reflect(ParameterBinder& b) {
+  b.integer("blur", blur, 3, 1, kMaxBlur,
+            "separable Gaussian kernel size in texels (odd; 3 = the papers' 3x3, 1 = no blur)")
+      .oddOnly();
+  b.boolean("mips", mips, false,
+            "mip-map the filtered moments and sample them trilinearly (the mip chain counts in memory_bytes)");
 }
 
 std::vector<float> MomentsPass::blurWeights(int size) {
@@ -48,14 +42,14 @@ std::vector<float> MomentsPass::blurWeights(int size) {
 void MomentsPass::allocate(const FrameInputs& in, const MomentsFormat& format) {
   const int n = in.shadowMapSize;
   // levels 0 = the full chain, booked in the ledger like any other level.
-  moments_ = Texture::create2D(format.internalFormat, n, n, mips_ ? 0 : 1);
-  moments_.setFilter(mips_ ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
+  moments_ = Texture::create2D(format.internalFormat, n, n, parameters_.mips ? 0 : 1);
+  moments_.setFilter(parameters_.mips ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
   depth_ = Texture::create2D(depthFormat_, n, n);
   momentsTarget_ = Framebuffer::create();
   momentsTarget_.attachColor(0, moments_);
   momentsTarget_.attachDepth(depth_);
   momentsTarget_.finish({0});
-  if (blur_ > 1) {
+  if (parameters_.blur > 1) {
     pingPong_ = Texture::create2D(format.internalFormat, n, n);
     pingPongTarget_ = Framebuffer::create();
     pingPongTarget_.attachColor(0, pingPong_);
@@ -80,15 +74,15 @@ void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsF
     depthFormat_ = depthFormat;
     allocate(in, format);
   }
-  if (blur_ > 1 && blurProgramRadius_ != blur_ / 2) {
+  if (parameters_.blur > 1 && blurProgramRadius_ != parameters_.blur / 2) {
     const auto blurProgram = [&](const char* step) {
       const std::string defines =
-          "#define BLUR_RADIUS " + std::to_string(blur_ / 2) + "\n#define BLUR_STEP " + step + "\n";
+          "#define BLUR_RADIUS " + std::to_string(parameters_.blur / 2) + "\n#define BLUR_STEP " + step + "\n";
       return Program::graphics("testbed/render/fullscreen.vert", "techniques/prefiltered/blur.frag", defines);
     };
     blurRows_ = blurProgram("ivec2(1, 0)");
     blurColumns_ = blurProgram("ivec2(0, 1)");
-    blurProgramRadius_ = blur_ / 2;
+    blurProgramRadius_ = parameters_.blur / 2;
   }
   const glm::ivec2 size(in.shadowMapSize);
 
@@ -118,8 +112,8 @@ void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsF
   // Always timed, so every configuration reports the same passes; with blur 1 and no mips
   // it is empty.
   auto scope = timer.scope("blur");
-  if (blur_ > 1) {
-    const std::vector<float> weights = blurWeights(blur_);
+  if (parameters_.blur > 1) {
+    const std::vector<float> weights = blurWeights(parameters_.blur);
     for (const Program* program : {&blurRows_, &blurColumns_}) {
       glProgramUniform1fv(program->id(), program->location("uWeights"), GLsizei(weights.size()), weights.data());
       program->set("uSource", 0);
@@ -129,7 +123,7 @@ void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsF
     glBindTextureUnit(0, pingPong_.id());
     screen_.draw(blurColumns_, momentsTarget_, size);
   }
-  if (mips_) glGenerateTextureMipmap(moments_.id());
+  if (parameters_.mips) glGenerateTextureMipmap(moments_.id());
 }
 
 }  // namespace testbed

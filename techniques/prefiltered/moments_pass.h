@@ -6,8 +6,8 @@
 //             surface; cleared first to the moments of depth 1 (the far plane).
 //  "blur":    a separable Gaussian (horizontal then vertical, two draws through a ping-pong
 //             texture), then, with `mips`, the mip chain for trilinear lookups.
-// Parameters `blur` (odd kernel size, 1 = none) and `mips` are declared here once and
-// appended to every technique's own.
+// Parameters `blur` (odd kernel size, 1 = none) and `mips` are declared here once; each
+// technique reflects them after its own.
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -17,7 +17,7 @@
 #include "testbed/gl/pass_timer.h"
 #include "testbed/gl/depth_format.h"
 #include "testbed/render/screen_pass.h"
-#include "testbed/technique/parameters.h"
+#include "testbed/technique/parameter_binder.h"
 
 namespace testbed {
 
@@ -25,8 +25,12 @@ struct FrameInputs;
 
 class MomentsPass {
  public:
-  static std::vector<ParameterSpec> parameters();
-  void configure(const ParameterSet& parameters);
+  struct Parameters {
+    int blur;
+    bool mips;
+    void reflect(ParameterBinder& b);
+  };
+  void configure(const Parameters& parameters) { parameters_ = parameters; }
 
   // Renders and filters the moments; `params` goes to the format's encode function.
   void render(const FrameInputs& in, PassTimer& timer, const MomentsFormat& format, const glm::vec4& params);
@@ -41,8 +45,7 @@ class MomentsPass {
  private:
   void allocate(const FrameInputs& in, const MomentsFormat& format);
 
-  int blur_ = 3;
-  bool mips_ = false;
+  Parameters parameters_{};
   MomentsFormat format_;
   GLenum depthFormat_ = 0;
   Texture moments_, pingPong_, depth_;

@@ -4,21 +4,9 @@
 
 namespace testbed {
 
-TechniqueInfo PrefilteredTechnique::familyInfo(std::string id, std::string citation, std::string summary,
-                                               std::vector<ParameterSpec> own) {
-  TechniqueInfo info;
-  info.id = std::move(id);
-  info.family = "prefiltered";
-  info.output = OutputKind::Filtered;
-  info.citation = std::move(citation);
-  info.summary = std::move(summary);
-  info.parameters = std::move(own);
-  for (auto& spec : MomentsPass::parameters()) info.parameters.push_back(std::move(spec));
-  return info;
-}
-
-void PrefilteredTechnique::configureShared(const ParameterSet& parameters, MomentsFormat format, glm::vec4 params) {
-  moments_.configure(parameters);
+void PrefilteredTechnique::configureShared(const MomentsPass::Parameters& moments, MomentsFormat format,
+                                           glm::vec4 params) {
+  moments_.configure(moments);
   format_ = std::move(format);
   params_ = params;
   visibility_ = Program();  // recompiled for this format on the next render

@@ -1,10 +1,9 @@
 #pragma once
 // The base of vsm, esm, evsm and msm: the shared moments and blur passes (MomentsPass),
 // then one screen pass (visibility.frag) that samples the filtered moments once per
-// receiver. A technique only declares its parameters and, in configure(), fills in its
-// MomentsFormat and the four numbers its GLSL entry points read.
-#include <vector>
-
+// receiver. A technique only declares its parameters (its own, then the MomentsPass
+// ones) and, in configure(), fills in its MomentsFormat and the four numbers its GLSL
+// entry points read.
 #include <glm/glm.hpp>
 
 #include "techniques/prefiltered/moments_pass.h"
@@ -18,12 +17,8 @@ class PrefilteredTechnique : public ShadowTechnique {
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) final;
 
  protected:
-  // TechniqueInfo fields common to the family, with `own` parameters followed by the
-  // shared passes' (blur, mips).
-  static TechniqueInfo familyInfo(std::string id, std::string citation, std::string summary,
-                                  std::vector<ParameterSpec> own);
   // Call from configure(): the shared passes' parameters plus the technique's choice.
-  void configureShared(const ParameterSet& parameters, MomentsFormat format, glm::vec4 params);
+  void configureShared(const MomentsPass::Parameters& moments, MomentsFormat format, glm::vec4 params);
 
  private:
   MomentsPass moments_;

@@ -8,24 +8,33 @@ namespace {
 
 class VarianceShadowMap final : public PrefilteredTechnique {
  public:
-  static const TechniqueInfo& staticInfo() {
-    static const TechniqueInfo info = familyInfo(
-        "vsm", "Donnelly & Lauritzen, Variance shadow maps, I3D 2006",
-        "variance shadow maps: (z, z^2) in RG32F, Gaussian-filtered; Chebyshev upper bound",
-        // min_variance 1e-6 (σ = 0.1% of the light's near-far range): ten times the float
-        // rounding of E[z²] − E[z]² at depth 1. Measured on the bundled scenes: 0 shows acne
-        // (bunny, dragon_sun), 1e-7..1e-6 none, 1e-4 starts to blur the fence's shadows.
-        {ParameterSpec::real("min_variance", 1e-6, 0.0, 1e-2,
-                             "variance floor in normalized linear light depth (sigma^2)"),
-         ParameterSpec::real("bleed_reduction", 0.0, 0.0, 0.99,
-                             "light-bleeding reduction: linstep(amount, 1, p_max); 0 = plain VSM")});
-    return info;
-  }
-  const TechniqueInfo& info() const override { return staticInfo(); }
+  struct Parameters {
+    float minVariance, bleedReduction;
+    MomentsPass::Parameters moments;
+    void reflect(ParameterBinder& b) {
+      // min_variance 1e-6 (σ = 0.1% of the light's near-far range): ten times the float
+      // rounding of E[z²] − E[z]² at depth 1. Measured on the bundled scenes: 0 shows acne
+      // (bunny, dragon_sun), 1e-7..1e-6 none, 1e-4 starts to blur the fence's shadows.
+      b.real("min_variance", minVariance, 1e-6, 0.0, 1e-2, "variance floor in normalized linear light depth (sigma^2)");
+      b.real("bleed_reduction", bleedReduction, 0.0, 0.0, 0.99,
+             "light-bleeding reduction: linstep(amount, 1, p_max); 0 = plain VSM");
+      moments.reflect(b);
+    }
+  };
 
-  void configure(const ParameterSet& p) override {
-    configureShared(p, MomentsFormat{GL_RG32F, "encodeVsm", "visibilityVsm"},
-                    glm::vec4(float(p.getFloat("min_variance")), float(p.getFloat("bleed_reduction")), 0, 0));
+  static TechniqueInfo describe() {
+    return {.id = "vsm",
+            .output = OutputKind::Filtered,
+            .citation = "Donnelly & Lauritzen, Variance shadow maps, I3D 2006",
+            .summary = "variance shadow maps: (z, z^2) in RG32F, Gaussian-filtered; Chebyshev upper bound",
+            .parameters = declaredParameters<Parameters>()};
+  }
+
+  void configure(const ParameterSet& values) override {
+    Parameters p{};
+    bindParameters(values, p);
+    configureShared(p.moments, MomentsFormat{GL_RG32F, "encodeVsm", "visibilityVsm"},
+                    glm::vec4(p.minVariance, p.bleedReduction, 0, 0));
   }
 };
 

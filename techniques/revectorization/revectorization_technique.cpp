@@ -6,47 +6,30 @@
 
 namespace testbed::revectorization {
 
-std::vector<ParameterSpec> commonParameters() {
-  return {
-      ParameterSpec::integer("max_search", 16, 1, 64,
-                             "most texels walked per direction when measuring an edge (the paper's L = 16)"),
-      // In normalized light depth: one 16-bit step is 1/65535 ≈ 1.5e-5, so 2.5e-5 is under
-      // two 16-bit steps; with 24-bit or 32f maps it is many steps.
-      ParameterSpec::real("epsilon", 2.5e-5, 0.0, 0.01,
-                          "sloped-surface epsilon in normalized light depth (GI 2016: 2.5e-5 or 2.5e-6); "
-                          "a 16-bit depth step is 1.5e-5, so pick it with the depth format in mind"),
-      ParameterSpec::real("bias", 0.0, -1.0, 1.0, "constant depth bias subtracted from the receiver's light depth"),
-      ParameterSpec::choice("debug", "none", {"none", "discontinuity", "onds"},
-                            "also write T.discontinuity.png (d_c as RGB) or T.onds.png (d_on: x red, y green)"),
-  };
+void CommonParameters::reflect(ParameterBinder& b) {
+  b.integer("max_search", maxSearch, 16, 1, 64,
+            "most texels walked per direction when measuring an edge (the paper's L = 16)");
+  // In normalized light depth: one 16-bit step is 1/65535 ≈ 1.5e-5, so 2.5e-5 is under
+  // two 16-bit steps; with 24-bit or 32f maps it is many steps.
+  b.real("epsilon", epsilon, 2.5e-5, 0.0, 0.01,
+         "sloped-surface epsilon in normalized light depth (GI 2016: 2.5e-5 or 2.5e-6); "
+         "a 16-bit depth step is 1.5e-5, so pick it with the depth format in mind");
+  reflectShadowTestBias(b, bias);
+  b.choice("debug", debug, DebugView::None,
+           {{"none", DebugView::None}, {"discontinuity", DebugView::Discontinuity}, {"onds", DebugView::Onds}},
+           "also write T.discontinuity.png (d_c as RGB) or T.onds.png (d_on: x red, y green)");
+  shadowMap.reflect(b);
 }
 
-ParameterSpec visibilityParameter() {
-  return ParameterSpec::choice("visibility", "conservative", {"conservative", "improved"},
-                               "conservative: lit side only, GI 2016 / EDTSM* eq. 4; "
-                               "improved: both sides, EDTSM* eq. 7");
+void reflectVisibility(ParameterBinder& b, bool& improved) {
+  b.choice("visibility", improved, false, {{"conservative", false}, {"improved", true}},
+           "conservative: lit side only, GI 2016 / EDTSM* eq. 4; "
+           "improved: both sides, EDTSM* eq. 7");
 }
 
-ParameterSpec kernelParameter() {
-  auto kernel = ParameterSpec::integer("kernel", 3, 1, 17, "filter width k in texels (k×k revectorized taps, odd)");
-  kernel.oddOnly = true;  // odd so the block is centred on the receiver's texel
-  return kernel;
-}
-
-std::vector<ParameterSpec> withCommonParameters(std::vector<ParameterSpec> own) {
-  for (auto& spec : commonParameters()) own.push_back(spec);
-  for (auto& spec : ShadowMapPass::parameters()) own.push_back(spec);
-  return own;
-}
-
-void Common::configure(const ParameterSet& parameters) {
-  maxSearch_ = static_cast<int>(parameters.getInt("max_search"));
-  epsilon_ = static_cast<float>(parameters.getFloat("epsilon"));
-  bias_ = static_cast<float>(parameters.getFloat("bias"));
-  const std::string& debug = parameters.getChoice("debug");
-  debug_ = debug == "discontinuity" ? DebugView::Discontinuity
-           : debug == "onds"        ? DebugView::Onds
-                                    : DebugView::None;
+void reflectKernel(ParameterBinder& b, int& kernel) {
+  // Odd so the block is centred on the receiver's texel.
+  b.integer("kernel", kernel, 3, 1, 17, "filter width k in texels (k×k revectorized taps, odd)").oddOnly();
 }
 
 void Common::bindLibrary(const Program& program, const Texture& shadowMap) const {
@@ -55,18 +38,18 @@ void Common::bindLibrary(const Program& program, const Texture& shadowMap) const
 }
 
 void Common::setLibraryUniforms(const Program& program) const {
-  program.set("uMaxSearch", maxSearch_);
-  program.set("uEpsilon", epsilon_);
-  program.set("uBias", bias_);
+  program.set("uMaxSearch", parameters_.maxSearch);
+  program.set("uEpsilon", parameters_.epsilon);
+  program.set("uBias", parameters_.bias);
 }
 
 void Common::renderDebug(const FrameInputs& in, const Texture& shadowMap, bool bothSides) {
-  if (debug_ == DebugView::None) return;
+  if (debugView() == DebugView::None) return;
   if (!debugProgram_)
     debugProgram_ = Program::graphics("testbed/render/fullscreen.vert", "techniques/revectorization/debug.frag");
   bindReceiverInputs(debugProgram_, in);
   bindLibrary(debugProgram_, shadowMap);
-  debugProgram_.set("uDebugView", debug_ == DebugView::Discontinuity ? 1 : 2);
+  debugProgram_.set("uDebugView", debugView() == DebugView::Discontinuity ? 1 : 2);
   debugProgram_.set("uBothSides", bothSides ? 1 : 0);
   renderDebugWith(debugProgram_, in.size);
 }
@@ -96,7 +79,7 @@ void Common::captureDebug(const Texture& rgba8, glm::ivec2 size) {
 }
 
 std::vector<std::pair<std::string, ImageF>> Common::debugImages() const {
-  switch (debug_) {
+  switch (debugView()) {
     case DebugView::Discontinuity: return {{"discontinuity", debugImage_}};
     case DebugView::Onds: return {{"onds", debugImage_}};
     case DebugView::None: break;
@@ -104,10 +87,9 @@ std::vector<std::pair<std::string, ImageF>> Common::debugImages() const {
   return {};
 }
 
-void SinglePassTechnique::configure(const ParameterSet& parameters) {
-  shadowMap_.configure(parameters);
+void SinglePassTechnique::configureCommon(const CommonParameters& parameters) {
+  shadowMap_.configure(parameters.shadowMap);
   common_.configure(parameters);
-  configureTechnique(parameters);
 }
 
 void SinglePassTechnique::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {

@@ -13,24 +13,29 @@
 
 namespace testbed::revectorization {
 
-// max_search, epsilon, bias, debug (the family's common parameters).
-std::vector<ParameterSpec> commonParameters();
-// `visibility` of smsr and rpcf-smsr: conservative (EDTSM* eq. 4) or improved (eq. 7).
-// EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
-// shadow mapping", Computers & Graphics 71 (2018).
-ParameterSpec visibilityParameter();
-// `kernel` of the RPCF variants.
-ParameterSpec kernelParameter();
-// Appends commonParameters() and ShadowMapPass::parameters() to `own`.
-std::vector<ParameterSpec> withCommonParameters(std::vector<ParameterSpec> own);
-
 enum class DebugView { None, Discontinuity, Onds };
+
+// The family's parameters after a technique's own: max_search, epsilon, bias, debug, then
+// the shadow map's.
+struct CommonParameters {
+  int maxSearch;
+  float epsilon, bias;
+  DebugView debug;
+  ShadowMapPass::Parameters shadowMap;
+  void reflect(ParameterBinder& b);
+};
+// `visibility` of smsr, rpcf-smsr and edtsm: conservative (EDTSM* eq. 4, false) or
+// improved (eq. 7, true). EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for
+// Euclidean distance transform shadow mapping", Computers & Graphics 71 (2018).
+void reflectVisibility(ParameterBinder& b, bool& improved);
+// `kernel` of the RPCF variants.
+void reflectKernel(ParameterBinder& b, int& kernel);
 
 // The common settings and the untimed debug view; used by the single-pass techniques and
 // by smsr-2pass.
 class Common {
  public:
-  void configure(const ParameterSet& parameters);
+  void configure(const CommonParameters& parameters) { parameters_ = parameters; }
   // Uniforms of revectorization.glsl; bindLibrary also binds the shadow map.
   void setLibraryUniforms(const Program& program) const;
   void bindLibrary(const Program& program, const Texture& shadowMap) const;
@@ -41,13 +46,11 @@ class Common {
   // into the debug target and read it back, or read back an RGBA8 texture of theirs.
   void renderDebugWith(const Program& program, glm::ivec2 size);
   void captureDebug(const Texture& rgba8, glm::ivec2 size);
-  DebugView debugView() const { return debug_; }
+  DebugView debugView() const { return parameters_.debug; }
   std::vector<std::pair<std::string, ImageF>> debugImages() const;
 
  private:
-  int maxSearch_ = 16;
-  float epsilon_ = 2.5e-5f, bias_ = 0.0f;
-  DebugView debug_ = DebugView::None;
+  CommonParameters parameters_{};
   Program debugProgram_;
   Texture debugTexture_;
   Framebuffer debugTarget_;
@@ -59,7 +62,6 @@ class Common {
 // timed "classify" (every pixel) and "revectorize" (the edge pixels).
 class SinglePassTechnique : public ShadowTechnique {
  public:
-  void configure(const ParameterSet& parameters) final;
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) final;
   std::vector<std::pair<std::string, ImageF>> debugImages() const override { return common_.debugImages(); }
 
@@ -67,7 +69,8 @@ class SinglePassTechnique : public ShadowTechnique {
   // `fragmentKey`: the technique's shader; `bothSides`: whether exiting discontinuities
   // take part (debug view only; the shader decides for itself).
   SinglePassTechnique(std::string fragmentKey, bool bothSides) : bothSides_(bothSides), screen_(std::move(fragmentKey)) {}
-  virtual void configureTechnique(const ParameterSet& parameters) = 0;
+  // From configure(): the CommonParameters among the technique's.
+  void configureCommon(const CommonParameters& parameters);
   virtual void setTechniqueUniforms(const Program& program) const = 0;
   // Compile-time settings of the screen pass's shaders.
   virtual std::string shaderDefines() const { return {}; }

@@ -18,57 +18,69 @@ class RpcfSmsr final : public SinglePassTechnique {
  public:
   RpcfSmsr() : SinglePassTechnique("techniques/revectorization/rpcf_smsr.frag", false) {}
 
-  static const TechniqueInfo& staticInfo() {
-    static const TechniqueInfo info = [] {
-      TechniqueInfo i;
-      i.id = "rpcf-smsr";
-      i.family = "revectorization";
-      i.output = OutputKind::Filtered;
-      i.citation = kCitation;
-      i.summary = "PCF whose k×k taps are each revectorized by SMSR (eq. 2)";
-      i.parameters = withCommonParameters({kernelParameter(), visibilityParameter()});
-      return i;
-    }();
-    return info;
+  struct Parameters {
+    int kernel;
+    bool improved;
+    CommonParameters common;
+    void reflect(ParameterBinder& b) {
+      reflectKernel(b, kernel);
+      reflectVisibility(b, improved);
+      common.reflect(b);
+    }
+  };
+
+  static TechniqueInfo describe() {
+    return {.id = "rpcf-smsr",
+            .output = OutputKind::Filtered,
+            .citation = kCitation,
+            .summary = "PCF whose k×k taps are each revectorized by SMSR (eq. 2)",
+            .parameters = declaredParameters<Parameters>()};
   }
-  const TechniqueInfo& info() const override { return staticInfo(); }
+
+  void configure(const ParameterSet& values) override {
+    bindParameters(values, parameters_);
+    configureCommon(parameters_.common);
+    bothSides_ = parameters_.improved;
+  }
 
  private:
-  void configureTechnique(const ParameterSet& parameters) override {
-    kernel_ = static_cast<int>(parameters.getInt("kernel"));
-    improved_ = parameters.getChoice("visibility") == "improved";
-    bothSides_ = improved_;
+  void setTechniqueUniforms(const Program& program) const override {
+    program.set("uImproved", parameters_.improved ? 1 : 0);
   }
-  void setTechniqueUniforms(const Program& program) const override { program.set("uImproved", improved_ ? 1 : 0); }
-  std::string shaderDefines() const override { return kernelDefine(kernel_); }
-  int kernel_ = 3;
-  bool improved_ = false;
+  std::string shaderDefines() const override { return kernelDefine(parameters_.kernel); }
+  Parameters parameters_{};
 };
 
 class RpcfRsmss final : public SinglePassTechnique {
  public:
   RpcfRsmss() : SinglePassTechnique("techniques/revectorization/rpcf_rsmss.frag", true) {}
 
-  static const TechniqueInfo& staticInfo() {
-    static const TechniqueInfo info = [] {
-      TechniqueInfo i;
-      i.id = "rpcf-rsmss";
-      i.family = "revectorization";
-      i.output = OutputKind::Filtered;
-      i.citation = kCitation;
-      i.summary = "PCF whose k×k taps are each smoothed by RSMSS (eq. 3)";
-      i.parameters = withCommonParameters({kernelParameter()});
-      return i;
-    }();
-    return info;
+  struct Parameters {
+    int kernel;
+    CommonParameters common;
+    void reflect(ParameterBinder& b) {
+      reflectKernel(b, kernel);
+      common.reflect(b);
+    }
+  };
+
+  static TechniqueInfo describe() {
+    return {.id = "rpcf-rsmss",
+            .output = OutputKind::Filtered,
+            .citation = kCitation,
+            .summary = "PCF whose k×k taps are each smoothed by RSMSS (eq. 3)",
+            .parameters = declaredParameters<Parameters>()};
   }
-  const TechniqueInfo& info() const override { return staticInfo(); }
+
+  void configure(const ParameterSet& values) override {
+    bindParameters(values, parameters_);
+    configureCommon(parameters_.common);
+  }
 
  private:
-  void configureTechnique(const ParameterSet& parameters) override { kernel_ = static_cast<int>(parameters.getInt("kernel")); }
   void setTechniqueUniforms(const Program&) const override {}
-  std::string shaderDefines() const override { return kernelDefine(kernel_); }
-  int kernel_ = 3;
+  std::string shaderDefines() const override { return kernelDefine(parameters_.kernel); }
+  Parameters parameters_{};
 };
 
 }  // namespace

@@ -11,23 +11,21 @@ class Rsmss final : public SinglePassTechnique {
  public:
   Rsmss() : SinglePassTechnique("techniques/revectorization/rsmss.frag", true) {}
 
-  static const TechniqueInfo& staticInfo() {
-    static const TechniqueInfo info = [] {
-      TechniqueInfo i;
-      i.id = "rsmss";
-      i.family = "revectorization";
-      i.output = OutputKind::Filtered;
-      i.citation = "Macedo, Apolinário, Revectorization-Based Shadow Mapping, GI 2016";
-      i.summary = "revectorization-based silhouette smoothing: continuous visibility over both edge sides";
-      i.parameters = withCommonParameters({});
-      return i;
-    }();
-    return info;
+  static TechniqueInfo describe() {
+    return {.id = "rsmss",
+            .output = OutputKind::Filtered,
+            .citation = "Macedo, Apolinário, Revectorization-Based Shadow Mapping, GI 2016",
+            .summary = "revectorization-based silhouette smoothing: continuous visibility over both edge sides",
+            .parameters = declaredParameters<CommonParameters>()};
   }
-  const TechniqueInfo& info() const override { return staticInfo(); }
+
+  void configure(const ParameterSet& values) override {
+    CommonParameters common{};
+    bindParameters(values, common);
+    configureCommon(common);
+  }
 
  private:
-  void configureTechnique(const ParameterSet&) override {}
   void setTechniqueUniforms(const Program&) const override {}
 };
 

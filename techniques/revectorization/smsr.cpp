@@ -14,28 +14,34 @@ class Smsr final : public SinglePassTechnique {
  public:
   Smsr() : SinglePassTechnique("techniques/revectorization/smsr.frag", false) {}
 
-  static const TechniqueInfo& staticInfo() {
-    static const TechniqueInfo info = [] {
-      TechniqueInfo i;
-      i.id = "smsr";
-      i.family = "revectorization";
-      i.output = OutputKind::Hard;
-      i.citation = "Macedo, Apolinário, Revectorization-Based Shadow Mapping, GI 2016";
-      i.summary = "single-pass shadow map silhouette revectorization (hard, light-space traversal)";
-      i.parameters = withCommonParameters({visibilityParameter()});
-      return i;
-    }();
-    return info;
+  struct Parameters {
+    bool improved;
+    CommonParameters common;
+    void reflect(ParameterBinder& b) {
+      reflectVisibility(b, improved);
+      common.reflect(b);
+    }
+  };
+
+  static TechniqueInfo describe() {
+    return {.id = "smsr",
+            .output = OutputKind::Hard,
+            .citation = "Macedo, Apolinário, Revectorization-Based Shadow Mapping, GI 2016",
+            .summary = "single-pass shadow map silhouette revectorization (hard, light-space traversal)",
+            .parameters = declaredParameters<Parameters>()};
   }
-  const TechniqueInfo& info() const override { return staticInfo(); }
+
+  void configure(const ParameterSet& values) override {
+    bindParameters(values, parameters_);
+    configureCommon(parameters_.common);
+    bothSides_ = parameters_.improved;  // the improved function traverses the shadowed side too
+  }
 
  private:
-  void configureTechnique(const ParameterSet& parameters) override {
-    improved_ = parameters.getChoice("visibility") == "improved";
-    bothSides_ = improved_;  // the improved function traverses the shadowed side too
+  void setTechniqueUniforms(const Program& program) const override {
+    program.set("uImproved", parameters_.improved ? 1 : 0);
   }
-  void setTechniqueUniforms(const Program& program) const override { program.set("uImproved", improved_ ? 1 : 0); }
-  bool improved_ = false;
+  Parameters parameters_{};
 };
 
 }  // namespace

@@ -21,24 +21,19 @@ namespace {
 
 class SmsrTwoPass final : public ShadowTechnique {
  public:
-  static const TechniqueInfo& staticInfo() {
-    static const TechniqueInfo info = [] {
-      TechniqueInfo i;
-      i.id = "smsr-2pass";
-      i.family = "revectorization";
-      i.output = OutputKind::Hard;
-      i.citation = "Bondarev, Shadow map silhouette revectorization, I3D 2014";
-      i.summary = "two-pass SMSR: screen-space discontinuity map, then a screen-space edge search";
-      i.parameters = withCommonParameters({});
-      return i;
-    }();
-    return info;
+  static TechniqueInfo describe() {
+    return {.id = "smsr-2pass",
+            .output = OutputKind::Hard,
+            .citation = "Bondarev, Shadow map silhouette revectorization, I3D 2014",
+            .summary = "two-pass SMSR: screen-space discontinuity map, then a screen-space edge search",
+            .parameters = declaredParameters<CommonParameters>()};
   }
-  const TechniqueInfo& info() const override { return staticInfo(); }
 
-  void configure(const ParameterSet& parameters) override {
-    shadowMap_.configure(parameters);
-    common_.configure(parameters);
+  void configure(const ParameterSet& values) override {
+    CommonParameters common{};
+    bindParameters(values, common);
+    shadowMap_.configure(common.shadowMap);
+    common_.configure(common);
   }
 
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {

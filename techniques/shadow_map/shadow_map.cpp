@@ -8,33 +8,33 @@ namespace {
 
 class PlainShadowMap final : public ShadowMapScreenTechnique {
  public:
+  struct Parameters {
+    float bias;
+    ShadowMapPass::Parameters shadowMap;
+    void reflect(ParameterBinder& b) {
+      reflectShadowTestBias(b, bias);
+      shadowMap.reflect(b);
+    }
+  };
+
   PlainShadowMap() : ShadowMapScreenTechnique("techniques/shadow_map/shadow_map_visibility.frag") {}
 
-  static const TechniqueInfo& staticInfo() {
-    static const TechniqueInfo info = [] {
-      TechniqueInfo i;
-      i.id = "sm";
-      i.family = "shadow_map";
-      i.output = OutputKind::Hard;
-      i.citation = "Williams, Casting curved shadows on curved surfaces, SIGGRAPH 1978";
-      i.summary = "plain shadow mapping: one nearest depth test per pixel";
-      i.parameters = {ParameterSpec::real("bias", 0.0, -1.0, 1.0,
-                                          "constant depth bias subtracted from the receiver's light depth")};
-      for (auto& spec : ShadowMapPass::parameters()) i.parameters.push_back(spec);
-      return i;
-    }();
-    return info;
+  static TechniqueInfo describe() {
+    return {.id = "sm",
+            .output = OutputKind::Hard,
+            .citation = "Williams, Casting curved shadows on curved surfaces, SIGGRAPH 1978",
+            .summary = "plain shadow mapping: one nearest depth test per pixel",
+            .parameters = declaredParameters<Parameters>()};
   }
 
-  const TechniqueInfo& info() const override { return staticInfo(); }
-
-  void configureOwn(const ParameterSet& parameters) override {
-    bias_ = static_cast<float>(parameters.getFloat("bias"));
+  void configure(const ParameterSet& values) override {
+    bindParameters(values, parameters_);
+    configureShadowMap(parameters_.shadowMap);
   }
-  void setUniforms(const Program& program) const override { program.set("uBias", bias_); }
+  void setUniforms(const Program& program) const override { program.set("uBias", parameters_.bias); }
 
  private:
-  float bias_ = 0.0f;
+  Parameters parameters_{};
 };
 
 }  // namespace

@@ -20,31 +20,29 @@ namespace {
 
 class SilhouetteMap final : public ShadowTechnique {
  public:
-  static const TechniqueInfo& staticInfo() {
-    static const TechniqueInfo info = [] {
-      TechniqueInfo i;
-      i.id = "silhouette-map";
-      i.family = "silhouette_map";
-      i.output = OutputKind::Hard;
-      i.citation = "Sen, Cammarano, Hanrahan, Shadow silhouette maps, SIGGRAPH 2003";
-      i.summary = "depth map plus one silhouette point per dual-grid texel; piecewise-linear shadow edges";
-      i.parameters = {
-          ParameterSpec::real("bias", 0.0, -1.0, 1.0, "constant depth bias subtracted from the receiver's light depth"),
-          ParameterSpec::real("occlusion_bias", 0.001, 0.0, 1.0,
-                              "depth tolerance of the hidden-edge test: an edge point counts as hidden "
-                              "when it lies farther than this behind all four corner depth samples"),
-      };
-      for (auto& spec : ShadowMapPass::parameters()) i.parameters.push_back(spec);
-      return i;
-    }();
-    return info;
-  }
-  const TechniqueInfo& info() const override { return staticInfo(); }
+  struct Parameters {
+    float bias, occlusionBias;
+    ShadowMapPass::Parameters shadowMap;
+    void reflect(ParameterBinder& b) {
+      reflectShadowTestBias(b, bias);
+      b.real("occlusion_bias", occlusionBias, 0.001, 0.0, 1.0,
+             "depth tolerance of the hidden-edge test: an edge point counts as hidden "
+             "when it lies farther than this behind all four corner depth samples");
+      shadowMap.reflect(b);
+    }
+  };
 
-  void configure(const ParameterSet& parameters) override {
-    shadowMap_.configure(parameters);
-    bias_ = static_cast<float>(parameters.getFloat("bias"));
-    occlusionBias_ = static_cast<float>(parameters.getFloat("occlusion_bias"));
+  static TechniqueInfo describe() {
+    return {.id = "silhouette-map",
+            .output = OutputKind::Hard,
+            .citation = "Sen, Cammarano, Hanrahan, Shadow silhouette maps, SIGGRAPH 2003",
+            .summary = "depth map plus one silhouette point per dual-grid texel; piecewise-linear shadow edges",
+            .parameters = declaredParameters<Parameters>()};
+  }
+
+  void configure(const ParameterSet& values) override {
+    bindParameters(values, parameters_);
+    shadowMap_.configure(parameters_.shadowMap);
   }
 
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {
@@ -59,7 +57,7 @@ class SilhouetteMap final : public ShadowTechnique {
       bindShadowMap(program, shadowMap_.depth());
       glBindTextureUnit(3, silhouettes_.id());
       program.set("uSilhouetteMap", 3);
-      program.set("uBias", bias_);
+      program.set("uBias", parameters_.bias);
     };
     visibility_.draw(in, out, timer, bind, "visibility", "silhouette-pixels");
   }
@@ -108,7 +106,7 @@ class SilhouetteMap final : public ShadowTechnique {
     edgeProgram_.use();
     edgeProgram_.set("uLightViewProjection", in.light.viewProjection());
     edgeProgram_.set("uMapSize", static_cast<float>(in.shadowMapSize));
-    edgeProgram_.set("uOcclusionBias", occlusionBias_);
+    edgeProgram_.set("uOcclusionBias", parameters_.occlusionBias);
     bindShadowMap(edgeProgram_, shadowMap_.depth());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, edgeBuffer_.id());
     glBindVertexArray(emptyVertexArray_.id());
@@ -116,7 +114,7 @@ class SilhouetteMap final : public ShadowTechnique {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
   }
 
-  float bias_ = 0.0f, occlusionBias_ = 0.001f;
+  Parameters parameters_{};
   ShadowMapPass shadowMap_;
   revectorization::EdgeSplitPass visibility_{"techniques/silhouette_map/silhouette_map_visibility.frag"};
   Program edgeProgram_;

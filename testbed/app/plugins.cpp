@@ -2,11 +2,8 @@
 
 #include <dlfcn.h>
 
-#include <cctype>
-#include <cmath>
 #include <filesystem>
 #include <set>
-#include <variant>
 
 #include "testbed/core/error.h"
 #include "testbed/gl/shader_library.h"
@@ -22,64 +19,12 @@ namespace fs = std::filesystem;
 const std::set<std::string, std::less<>> kReservedIds = {"all",         "area",    "grid",
                                                          "groundtruth", "metrics", "raycast"};
 
-// Ids and parameter names become file names and `--set T.name=v` words: keep them plain.
-bool plainName(const std::string& name, bool allowDash) {
-  if (name.empty()) return false;
-  for (char c : name)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || (allowDash && c == '-'))) return false;
-  return true;
-}
-
-std::size_t valueIndexFor(ParameterType type) {
-  switch (type) {
-    case ParameterType::Bool: return 0;
-    case ParameterType::Int: return 1;
-    case ParameterType::Float: return 2;
-    case ParameterType::Choice: return 3;
-  }
-  return std::variant_npos;
-}
-
-// The checks in-tree specs pass by construction (ParameterSpec::real etc.); a plugin may
-// have filled the struct by hand. Returns what is wrong, empty when nothing is.
-std::string specProblem(const ParameterSpec& spec) {
-  if (!plainName(spec.name, false)) return "name must be letters, digits and '_'";
-  if (spec.defaultValue.index() != valueIndexFor(spec.type))
-    return "default is not a " + std::string(typeName(spec.type));
-  if (spec.type == ParameterType::Int || spec.type == ParameterType::Float) {
-    const double value = spec.type == ParameterType::Int ? double(std::get<std::int64_t>(spec.defaultValue))
-                                                         : std::get<double>(spec.defaultValue);
-    if (!std::isfinite(spec.min) || !std::isfinite(spec.max) || spec.min > spec.max)
-      return "range [" + formatValue(spec.min) + ", " + formatValue(spec.max) + "] is empty or not finite";
-    if (!std::isfinite(value) || value < spec.min || value > spec.max)
-      return "default " + formatValue(spec.defaultValue) + " is outside [" + formatValue(spec.min) + ", " +
-             formatValue(spec.max) + "]";
-    if (spec.oddOnly && (spec.type != ParameterType::Int || std::get<std::int64_t>(spec.defaultValue) % 2 == 0))
-      return "odd_only needs an odd integer default";
-  }
-  if (spec.type == ParameterType::Choice) {
-    const auto& value = std::get<std::string>(spec.defaultValue);
-    bool listed = false;
-    for (const auto& choice : spec.choices) listed = listed || choice == value;
-    if (!listed) return "default '" + value + "' is not among its choices";
-  }
-  return "";
-}
-
 void checkTechnique(const TechniqueInfo& info, const std::set<std::string>& earlier, const std::string& where) {
-  if (!plainName(info.id, true))
-    throw InputError(where + ": technique id '" + info.id + "' must be letters, digits, '-' and '_'");
+  if (const std::string problem = techniqueProblem(info); !problem.empty()) throw InputError(where + ": " + problem);
   const std::string technique = where + ": technique '" + info.id + "'";
   if (kReservedIds.count(info.id)) throw InputError(technique + ": the id is reserved by the testbed");
   if (isTechniqueRegistered(info.id) || earlier.count(info.id))
     throw InputError(technique + ": the id is already registered");
-  std::set<std::string> names;
-  for (const auto& spec : info.parameters) {
-    if (!names.insert(spec.name).second)
-      throw InputError(technique + ": parameter '" + spec.name + "' is declared twice");
-    const std::string problem = specProblem(spec);
-    if (!problem.empty()) throw InputError(technique + ": parameter '" + spec.name + "': " + problem);
-  }
 }
 
 // dlerror() starts with the file name; the caller names the path already.

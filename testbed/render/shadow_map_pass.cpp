@@ -9,18 +9,15 @@
 
 namespace testbed {
 
-std::vector<ParameterSpec> ShadowMapPass::parameters() {
-  return {
-      ParameterSpec::real("offset_factor", 4.0, 0.0, 100.0,
-                          "glPolygonOffset factor while rendering the shadow map (slope term)"),
-      ParameterSpec::real("offset_units", 20.0, 0.0, 100000.0,
-                          "glPolygonOffset units while rendering the shadow map (constant term)"),
-  };
+void ShadowMapPass::Parameters::reflect(ParameterBinder& b) {
+  b.real("offset_factor", offsetFactor, 4.0, 0.0, 100.0,
+         "glPolygonOffset factor while rendering the shadow map (slope term)");
+  b.real("offset_units", offsetUnits, 20.0, 0.0, 100000.0,
+         "glPolygonOffset units while rendering the shadow map (constant term)");
 }
 
-void ShadowMapPass::configure(const ParameterSet& parameters) {
-  offsetFactor_ = static_cast<float>(parameters.getFloat("offset_factor"));
-  offsetUnits_ = static_cast<float>(parameters.getFloat("offset_units"));
+void reflectShadowTestBias(ParameterBinder& b, float& bias) {
+  b.real("bias", bias, 0.0, -1.0, 1.0, "constant depth bias subtracted from the receiver's light depth");
 }
 
 void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
@@ -44,7 +41,7 @@ void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
   glDepthMask(GL_TRUE);
   glDisable(GL_CULL_FACE);  // open meshes cast shadows from both sides
   glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(offsetFactor_, offsetUnits_);
+  glPolygonOffset(parameters_.offsetFactor, parameters_.offsetUnits);
   program_.use();
   program_.set("uLightViewProjection", in.light.viewProjection());
   in.geometry.draw();

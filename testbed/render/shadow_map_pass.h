@@ -4,8 +4,6 @@
 // convention), polygon offset while rendering (default factor 4, units 20, the papers').
 // The offset counts depth-buffer steps, so its world size follows the light's depth range,
 // which the harness fits to the scene (scene/light_fit.h); every record states it.
-#include <vector>
-
 #include <nlohmann/json_fwd.hpp>
 
 #include "testbed/gl/objects.h"
@@ -13,7 +11,7 @@
 #include "testbed/gl/depth_format.h"
 #include "testbed/render/gpu_scene.h"
 #include "testbed/scene/view.h"
-#include "testbed/technique/parameters.h"
+#include "testbed/technique/parameter_binder.h"
 
 namespace testbed {
 
@@ -21,10 +19,13 @@ struct FrameInputs;
 
 class ShadowMapPass {
  public:
-  // The pass's own parameters; techniques that use the pass append these to theirs, so
-  // they are declared once.
-  static std::vector<ParameterSpec> parameters();
-  void configure(const ParameterSet& parameters);
+  // The pass's parameters: a technique that uses the pass holds them and reflects them
+  // after its own, so they are declared once, here.
+  struct Parameters {
+    float offsetFactor, offsetUnits;
+    void reflect(ParameterBinder& b);
+  };
+  void configure(const Parameters& parameters) { parameters_ = parameters; }
 
   // Renders the light's depth into the map (timed as "shadow-map"); (re)allocates the
   // texture when size or format change.
@@ -32,7 +33,7 @@ class ShadowMapPass {
   const Texture& depth() const { return depth_; }
 
  private:
-  float offsetFactor_ = 4.0f, offsetUnits_ = 20.0f;
+  Parameters parameters_{};
   Texture depth_;
   Framebuffer framebuffer_;
   Program program_;
@@ -44,6 +45,9 @@ class ShadowMapPass {
 // offset, the offset for a surface at 45° to the light (units·step + factor·texel).
 nlohmann::json lightSetupRecord(const LightTransforms& light, int shadowMapSize, DepthFormat format,
                                 const nlohmann::json& params);
+
+// `bias` of glsl/shadow_test.glsl (uBias), shared by every technique that uses the test.
+void reflectShadowTestBias(ParameterBinder& b, float& bias);
 
 // Uniforms and binding of glsl/shadow_test.glsl: the shadow map on texture unit 2.
 void bindShadowMap(const Program& program, const Texture& shadowMap);

@@ -4,11 +4,6 @@
 
 namespace testbed {
 
-void ShadowMapScreenTechnique::configure(const ParameterSet& parameters) {
-  shadowMap_.configure(parameters);
-  configureOwn(parameters);
-}
-
 void ShadowMapScreenTechnique::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
   if (!program_) program_ = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_);
   shadowMap_.render(in, timer);

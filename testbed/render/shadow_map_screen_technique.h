@@ -2,8 +2,8 @@
 // The shape of the simplest techniques (sm, pcf, the single-pass revectorization family):
 // the shared shadow map, then one timed full-screen pass running the technique's own
 // fragment shader with the receiver and shadow-map uniforms bound. A subclass names its
-// shader and pass, reads its own parameters and sets its own uniforms; the passes, timing
-// and bindings live here once.
+// shader and pass, binds its parameters (handing the shadow map its part) and sets its
+// own uniforms; the passes, timing and bindings live here once.
 #include <string>
 #include <utility>
 
@@ -15,15 +15,14 @@ namespace testbed {
 
 class ShadowMapScreenTechnique : public ShadowTechnique {
  public:
-  void configure(const ParameterSet& parameters) final;
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) final;
 
  protected:
   // `fragmentKey`: the embedded shader of the screen pass; `passName`: its timer scope.
   explicit ShadowMapScreenTechnique(std::string fragmentKey, std::string passName = "visibility")
       : fragmentKey_(std::move(fragmentKey)), passName_(std::move(passName)) {}
-  // The technique's parameters beyond ShadowMapPass::parameters().
-  virtual void configureOwn(const ParameterSet& parameters) = 0;
+  // From configure(): the ShadowMapPass::Parameters among the technique's.
+  void configureShadowMap(const ShadowMapPass::Parameters& parameters) { shadowMap_.configure(parameters); }
   virtual void setUniforms(const Program& program) const = 0;
   // Runs after the timed passes, outside any timer scope (debug views).
   virtual void afterTimedPasses(const FrameInputs&, const Texture& /*shadowMap*/) {}

@@ -77,6 +77,43 @@ std::string formatValue(const ParameterValue& value) {
   return std::visit(Visitor{}, value);
 }
 
+namespace {
+
+std::size_t valueIndexFor(ParameterType type) {
+  switch (type) {
+    case ParameterType::Bool: return 0;
+    case ParameterType::Int: return 1;
+    case ParameterType::Float: return 2;
+    case ParameterType::Choice: return 3;
+  }
+  return std::variant_npos;
+}
+
+}  // namespace
+
+std::string parameterSpecProblem(const ParameterSpec& spec) {
+  if (spec.defaultValue.index() != valueIndexFor(spec.type))
+    return "default is not a " + std::string(typeName(spec.type));
+  if (spec.type == ParameterType::Int || spec.type == ParameterType::Float) {
+    const double value = spec.type == ParameterType::Int ? double(std::get<std::int64_t>(spec.defaultValue))
+                                                         : std::get<double>(spec.defaultValue);
+    if (!std::isfinite(spec.min) || !std::isfinite(spec.max) || spec.min > spec.max)
+      return "range [" + formatValue(spec.min) + ", " + formatValue(spec.max) + "] is empty or not finite";
+    if (!std::isfinite(value) || value < spec.min || value > spec.max)
+      return "default " + formatValue(spec.defaultValue) + " is outside [" + formatValue(spec.min) + ", " +
+             formatValue(spec.max) + "]";
+  }
+  if (spec.oddOnly && (spec.type != ParameterType::Int || std::get<std::int64_t>(spec.defaultValue) % 2 == 0))
+    return "odd_only needs an odd integer default";
+  if (spec.type == ParameterType::Choice) {
+    const auto& value = std::get<std::string>(spec.defaultValue);
+    bool listed = false;
+    for (const auto& choice : spec.choices) listed = listed || choice == value;
+    if (!listed) return "default '" + value + "' is not among its choices";
+  }
+  return "";
+}
+
 const ParameterValue& ParameterSet::at(std::string_view name) const {
   const auto it = values_.find(name);
   if (it == values_.end()) throw std::logic_error("undeclared parameter " + std::string(name));

@@ -34,6 +34,11 @@ struct ParameterSpec {
 };
 
 std::string_view typeName(ParameterType type);
+
+// What is wrong with a spec, empty when nothing is: a default of another type, an empty or
+// non-finite range, a default outside its range, an odd-only parameter with an even (or
+// non-integer) default, a choice whose default is not among its words.
+std::string parameterSpecProblem(const ParameterSpec& spec);
 std::string formatValue(const ParameterValue& value);
 
 // A complete, validated set: every declared parameter has a value of its type.

@@ -87,6 +87,32 @@ TEST(Registry, EveryTechniqueDeclaresValidDefaults) {
   }
 }
 
+// The checks the plugin loader applies hold for every in-tree technique too.
+TEST(Registry, EveryTechniquePassesTheSpecChecks) {
+  for (const auto& t : registeredTechniques()) EXPECT_EQ(techniqueProblem(*t.info), "") << t.info->id;
+}
+
+TEST(Registry, SpecChecksNameWhatIsWrong) {
+  TechniqueInfo info;
+  info.id = "demo";
+  EXPECT_EQ(techniqueProblem(info), "");
+  info.parameters = {ParameterSpec::real("bias", 0.0, -1.0, 1.0, "a"), ParameterSpec::real("bias", 0.0, -1.0, 1.0, "b")};
+  EXPECT_EQ(techniqueProblem(info), "technique 'demo': parameter 'bias': declared twice");
+  auto kernel = ParameterSpec::integer("kernel", 4, 1, 17, "even default");
+  kernel.oddOnly = true;
+  info.parameters = {kernel};
+  EXPECT_EQ(techniqueProblem(info), "technique 'demo': parameter 'kernel': odd_only needs an odd integer default");
+  info.parameters = {ParameterSpec::real("bias", 2.0, -1.0, 1.0, "outside")};
+  EXPECT_EQ(techniqueProblem(info), "technique 'demo': parameter 'bias': default 2 is outside [-1, 1]");
+  info.parameters = {ParameterSpec::choice("mode", "a", {}, "no choices")};
+  EXPECT_EQ(techniqueProblem(info), "technique 'demo': parameter 'mode': default 'a' is not among its choices");
+  info.parameters = {ParameterSpec::boolean("two words", false, "not plain")};
+  EXPECT_EQ(techniqueProblem(info), "technique 'demo': parameter 'two words': name must be letters, digits and '_'");
+  info.parameters = {};
+  info.id = "a/b";
+  EXPECT_EQ(techniqueProblem(info), "technique id 'a/b' must be letters, digits, '-' and '_'");
+}
+
 TEST(Registry, FindsSmAndNamesTheKnownIdsForAnUnknownOne) {
   EXPECT_EQ(findTechnique("sm").info->id, "sm");
   try {

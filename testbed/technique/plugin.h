@@ -3,7 +3,7 @@
 // It registers its techniques through the same interface as the in-tree ones:
 //
 //   #include "testbed/technique/plugin.h"
-//   class MyTechnique : public testbed::ShadowTechnique { ... static const TechniqueInfo& staticInfo(); };
+//   class MyTechnique : public testbed::ShadowTechnique { ... static TechniqueInfo describe(); };
 //   TESTBED_PLUGIN(registrar) { registrar.add<MyTechnique>(); }
 //
 // The plugin is built against the testbed's headers only (cmake: testbed_add_plugin) and
@@ -13,6 +13,7 @@
 // there is one registry and one GL loader in the process. Its embedded shaders
 // (testbed_add_plugin SHADERS) register with the executable's shader library when the
 // library is loaded, keyed by their path relative to the plugin project's root.
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -21,7 +22,7 @@
 // Bumped whenever a change to technique.h, registry.h or the core classes a plugin may
 // derive from breaks plugins built against an older testbed: the loader refuses a plugin
 // built for another version instead of crashing in it.
-#define TESTBED_PLUGIN_API_VERSION 1
+#define TESTBED_PLUGIN_API_VERSION 2  // 2: describe() and ParameterBinder replace info() and staticInfo()
 
 namespace testbed {
 
@@ -29,15 +30,18 @@ namespace testbed {
 // (id free and well-formed, parameter specs consistent) before any reaches the registry.
 class PluginRegistrar {
  public:
-  // `info` must live as long as the process (a function-local static, as in-tree).
-  void add(const TechniqueInfo& info, TechniqueFactory factory) {
-    added_.push_back(RegisteredTechnique{&info, std::move(factory)});
+  // `family` names the plugin's folder in `testbed list` and the records.
+  void add(TechniqueInfo info, std::string_view family, TechniqueFactory factory) {
+    added_.push_back(RegisteredTechnique{&keepTechniqueInfo(std::move(info), family), std::move(factory)});
   }
-  // For a class with `static const TechniqueInfo& staticInfo()`, like TESTBED_REGISTER_TECHNIQUE.
+#ifdef TESTBED_TECHNIQUE_FAMILY  // defined by cmake's testbed_add_plugin: the plugin's folder
+  // For a class with `static TechniqueInfo describe()`, like TESTBED_REGISTER_TECHNIQUE.
   template <class Technique>
   void add() {
-    add(Technique::staticInfo(), [] { return std::unique_ptr<ShadowTechnique>(new Technique()); });
+    add(Technique::describe(), TESTBED_TECHNIQUE_FAMILY,
+        [] { return std::unique_ptr<ShadowTechnique>(new Technique()); });
   }
+#endif
   const std::vector<RegisteredTechnique>& added() const { return added_; }
 
  private:

@@ -1,7 +1,10 @@
 #include "testbed/technique/registry.h"
 
 #include <algorithm>
+#include <cctype>
+#include <deque>
 #include <map>
+#include <set>
 
 #include "testbed/core/error.h"
 #include "testbed/technique/parameters.h"
@@ -21,7 +24,15 @@ std::vector<RegisteredTechnique>*& captureTarget() {
 
 }  // namespace
 
-TechniqueRegistration::TechniqueRegistration(const TechniqueInfo& info, TechniqueFactory factory) {
+const TechniqueInfo& keepTechniqueInfo(TechniqueInfo info, std::string_view family) {
+  static std::deque<TechniqueInfo> kept;  // a deque never moves its elements
+  info.family = std::string(family);
+  return kept.emplace_back(std::move(info));
+}
+
+TechniqueRegistration::TechniqueRegistration(TechniqueInfo description, std::string_view family,
+                                             TechniqueFactory factory) {
+  const TechniqueInfo& info = keepTechniqueInfo(std::move(description), family);
   if (auto* capture = captureTarget()) {
     capture->push_back(RegisteredTechnique{&info, std::move(factory)});
     return;
@@ -56,6 +67,29 @@ const RegisteredTechnique& findTechnique(std::string_view id) {
   std::string known;
   for (const auto& [name, entry] : registry()) known += (known.empty() ? "" : ", ") + name;
   throw InputError("--technique: unknown technique '" + std::string(id) + "' (known: " + known + ")");
+}
+
+namespace {
+
+bool plainName(const std::string& name, bool allowDash) {
+  if (name.empty()) return false;
+  for (char c : name)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || (allowDash && c == '-'))) return false;
+  return true;
+}
+
+}  // namespace
+
+std::string techniqueProblem(const TechniqueInfo& info) {
+  if (!plainName(info.id, true)) return "technique id '" + info.id + "' must be letters, digits, '-' and '_'";
+  std::set<std::string> names;
+  for (const auto& spec : info.parameters) {
+    const std::string parameter = "technique '" + info.id + "': parameter '" + spec.name + "': ";
+    if (!plainName(spec.name, false)) return parameter + "name must be letters, digits and '_'";
+    if (!names.insert(spec.name).second) return parameter + "declared twice";
+    if (const std::string problem = parameterSpecProblem(spec); !problem.empty()) return parameter + problem;
+  }
+  return "";
 }
 
 std::string techniqueTableMarkdown() {

@@ -1,8 +1,11 @@
 #pragma once
 // Static self-registration of techniques: a technique's .cpp ends with
 //   TESTBED_REGISTER_TECHNIQUE(MyTechnique);
-// where MyTechnique has `static const TechniqueInfo& staticInfo()`.
+// where MyTechnique has `static TechniqueInfo describe()`, every field but `family`: that
+// is the technique's folder, which cmake's testbed_add_technique (and testbed_add_plugin)
+// define as TESTBED_TECHNIQUE_FAMILY for the technique's sources.
 #include <memory>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -24,9 +27,19 @@ const RegisteredTechnique& findTechnique(std::string_view id);
 // the README equal to it).
 std::string techniqueTableMarkdown();
 
+// Keeps `info` with its `family` for the process's lifetime (the registry and the
+// records point to it).
+const TechniqueInfo& keepTechniqueInfo(TechniqueInfo info, std::string_view family);
+
 struct TechniqueRegistration {
-  TechniqueRegistration(const TechniqueInfo& info, TechniqueFactory factory);
+  TechniqueRegistration(TechniqueInfo info, std::string_view family, TechniqueFactory factory);
 };
+
+// What is wrong with a technique's declaration, empty when nothing is: an id or parameter
+// name that is not plain (ids become file names, parameter names `--set T.name=v` words),
+// a parameter declared twice, or a spec that fails parameterSpecProblem(). The plugin
+// loader turns a problem into an input error; tests/ check every in-tree technique.
+std::string techniqueProblem(const TechniqueInfo& info);
 
 // For the plugin loader (testbed/app/plugins.cpp), which validates a plugin's techniques
 // before adding them, so that a bad plugin is an input error rather than a crash.
@@ -52,4 +65,5 @@ class StaticRegistrationCapture {
 
 #define TESTBED_REGISTER_TECHNIQUE(Class)                                              \
   static const ::testbed::TechniqueRegistration testbedRegistration_##Class{           \
-      Class::staticInfo(), [] { return std::unique_ptr<::testbed::ShadowTechnique>(new Class()); }}
+      Class::describe(), TESTBED_TECHNIQUE_FAMILY,                                       \
+      [] { return std::unique_ptr<::testbed::ShadowTechnique>(new Class()); }}

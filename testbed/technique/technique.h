@@ -16,6 +16,7 @@
 #include "testbed/gl/depth_format.h"
 #include "testbed/scene/scene.h"
 #include "testbed/scene/view.h"
+#include "testbed/technique/parameter_binder.h"
 #include "testbed/technique/parameters.h"
 
 namespace testbed {
@@ -25,13 +26,15 @@ class GBuffer;
 
 enum class OutputKind { Hard, Filtered };
 
+// A technique's describe() fills it with designated initializers; every member has an
+// initializer, so leaving one out (family; parameters when there are none) is fine.
 struct TechniqueInfo {
-  std::string id;        // CLI name: "sm", "smsr", "rpcf-rsmss"
-  std::string family;    // folder family: "shadow_map", "revectorization"
+  std::string id{};        // CLI name: "sm", "smsr", "rpcf-rsmss"
+  std::string family{};    // the technique's folder, "shadow_map": set at registration (registry.h)
   OutputKind output = OutputKind::Hard;
-  std::string citation;  // "Williams 1978"
-  std::string summary;   // one line for `testbed list`
-  std::vector<ParameterSpec> parameters;
+  std::string citation{};  // "Williams 1978"
+  std::string summary{};   // one line for `testbed list`
+  std::vector<ParameterSpec> parameters{};  // declaredParameters<P>() of its parameter struct
 };
 
 struct FrameInputs {
@@ -55,8 +58,8 @@ struct VisibilityTarget {
 class ShadowTechnique {
  public:
   virtual ~ShadowTechnique() = default;
-  virtual const TechniqueInfo& info() const = 0;
-  // Called once with the validated parameters, before the first render.
+  // Called once with the validated parameters, before the first render: typically
+  // bindParameters(parameters, parameters_) (parameter_binder.h), then derived state.
   virtual void configure(const ParameterSet& parameters) = 0;
   // Renders one frame. Every GPU pass runs inside a `timer.scope("name")`. GL objects may
   // be (re)allocated here; their bytes are booked as this technique's memory.

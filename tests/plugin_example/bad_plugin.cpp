@@ -16,22 +16,19 @@ using namespace testbed;
 // Never rendered: the loader rejects it before any frame.
 class Dummy final : public ShadowTechnique {
  public:
-  static const TechniqueInfo& staticInfo() {
-    static const TechniqueInfo info = [] {
-      TechniqueInfo i;
+  static TechniqueInfo describe() {
+    TechniqueInfo i;
 #if defined(BAD_DUPLICATE_ID)
-      i.id = "sm";  // taken by the in-tree technique
+    i.id = "sm";  // taken by the in-tree technique
 #else
-      i.id = "bad-plugin";
+    i.id = "bad-plugin";
 #endif
 #if defined(BAD_PARAMETER_SPEC)
-      i.parameters = {ParameterSpec::integer("kernel", 4, 1, 3, "default outside its own range")};
+    // A spec filled by hand, bypassing ParameterBinder.
+    i.parameters = {ParameterSpec::integer("kernel", 4, 1, 3, "default outside its own range")};
 #endif
-      return i;
-    }();
-    return info;
+    return i;
   }
-  const TechniqueInfo& info() const override { return staticInfo(); }
   void configure(const ParameterSet&) override {}
   void render(const FrameInputs&, PassTimer&, const VisibilityTarget&) override {}
 };

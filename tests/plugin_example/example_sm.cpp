@@ -10,30 +10,35 @@ using namespace testbed;
 
 class ExampleShadowMap final : public ShadowMapScreenTechnique {
  public:
+  // Each parameter once: name, member, default, range, help; shared ones by their owner.
+  struct Parameters {
+    float bias;
+    ShadowMapPass::Parameters shadowMap;
+    void reflect(ParameterBinder& b) {
+      reflectShadowTestBias(b, bias);
+      shadowMap.reflect(b);
+    }
+  };
+
   ExampleShadowMap() : ShadowMapScreenTechnique("tests/plugin_example/example_sm.frag") {}
 
-  static const TechniqueInfo& staticInfo() {
-    static const TechniqueInfo info = [] {
-      TechniqueInfo i;
-      i.id = "example-sm";
-      i.family = "plugin_example";
-      i.output = OutputKind::Hard;
-      i.citation = "Williams, Casting curved shadows on curved surfaces, SIGGRAPH 1978";
-      i.summary = "plugin example: plain shadow mapping loaded with --plugin";
-      i.parameters = {ParameterSpec::real("bias", 0.0, -1.0, 1.0,
-                                          "constant depth bias subtracted from the receiver's light depth")};
-      for (auto& spec : ShadowMapPass::parameters()) i.parameters.push_back(spec);
-      return i;
-    }();
-    return info;
+  // Every field but `family`, which is this folder's name (cmake: testbed_add_plugin).
+  static TechniqueInfo describe() {
+    return {.id = "example-sm",
+            .output = OutputKind::Hard,
+            .citation = "Williams, Casting curved shadows on curved surfaces, SIGGRAPH 1978",
+            .summary = "plugin example: plain shadow mapping loaded with --plugin",
+            .parameters = declaredParameters<Parameters>()};
   }
 
-  const TechniqueInfo& info() const override { return staticInfo(); }
-  void configureOwn(const ParameterSet& parameters) override { bias_ = float(parameters.getFloat("bias")); }
-  void setUniforms(const Program& program) const override { program.set("uBias", bias_); }
+  void configure(const ParameterSet& values) override {
+    bindParameters(values, parameters_);
+    configureShadowMap(parameters_.shadowMap);
+  }
+  void setUniforms(const Program& program) const override { program.set("uBias", parameters_.bias); }
 
  private:
-  float bias_ = 0.0f;
+  Parameters parameters_{};
 };
 
 }  // namespace
