@@ -10,6 +10,7 @@
 //   mean-filter  the edge-aware separable mean filter (eqs. 9–10), two draws
 #include "techniques/distance_transform/feature_transform.h"
 #include "techniques/revectorization/revectorization_technique.h"
+#include "testbed/gl/render_target.h"
 #include "testbed/render/screen_pass.h"
 #include "testbed/render/shadow_map_pass.h"
 #include "testbed/technique/technique.h"
@@ -29,10 +30,6 @@ class EdtShadowMapping : public ShadowTechnique {
   explicit EdtShadowMapping(bool improved) : improved_(improved) {}
 
  private:
-  struct ScreenTexture {
-    Texture texture;
-    Framebuffer target;
-  };
   void allocate(glm::ivec2 size);
   // Receivers, camera depth and the edge-awareness threshold of edtsm_screen.glsl.
   void bindScreenInputs(const Program& program, const FrameInputs& in) const;
@@ -46,7 +43,7 @@ class EdtShadowMapping : public ShadowTechnique {
   FeatureTransformPass featureTransform_;
   revectorization::EdgeSplitPass rbsmPass_{"techniques/distance_transform/edtsm_rbsm.frag"};
   Program seedsProgram_, penumbraProgram_, filterProgram_;
-  ScreenTexture hard_, seeds_, intensity_, filtered_;
+  RenderTarget hard_, seeds_, intensity_, filtered_;
 };
 
 }  // namespace testbed::distance_transform

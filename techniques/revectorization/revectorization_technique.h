@@ -47,8 +47,7 @@ class Common {
   float epsilon_ = 2.5e-5f, bias_ = 0.0f;
   DebugView debug_ = DebugView::None;
   Program debugProgram_;
-  Texture debugTexture_;
-  Framebuffer debugTarget_;
+  RenderTarget debugTarget_;  // RGBA8
   ScreenPass screen_;
   ImageF debugImage_;
 };

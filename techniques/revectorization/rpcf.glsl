@@ -1,6 +1,8 @@
 // The kernel width shared by the two RPCF variants (rpcf_smsr.glsl, rpcf_rsmss.glsl), odd:
 // the k×k block is centred on the receiver's texel. The screen passes compile it in
 // (RPCF_KERNEL), so the tap loops unroll; the unit-test probe sets the uniform.
+#include "testbed/glsl/kernel.glsl"
+
 #ifdef RPCF_KERNEL
 const int uKernel = RPCF_KERNEL;
 #else
@@ -17,16 +19,15 @@ uint rpcfRowTests(ivec2 centre, int dy, int h, float depth) {
 }
 
 // Whether the taps' texels, computed as the variants' visibility functions compute them
-// (uv + offset · texel size), form the k×k block around `centre` with a one-texel rim
+// (kernelTapUv), form the k×k block around `centre` with a one-texel rim
 // inside the map: then the row masks below describe every tap exactly.
 bool rpcfRegularBlock(vec2 uv, ivec2 centre) {
   int h = uKernel / 2;
   vec2 size = vec2(uShadowMapSize);
-  vec2 texel = 1.0 / size;
   bool regular = rvInsideMap(centre - ivec2(h + 1)) && rvInsideMap(centre + ivec2(h + 1));
   for (int y = -h; y <= h; ++y)
     for (int x = -h; x <= h; ++x)
-      regular = regular && ivec2(floor((uv + vec2(x, y) * texel) * size)) == centre + ivec2(x, y);
+      regular = regular && ivec2(floor(kernelTapUv(uv, x, y) * size)) == centre + ivec2(x, y);
   return regular;
 }
 
@@ -121,7 +122,7 @@ bool rpcfNextEdgeTap(inout RpcfTaps w) {
   w.pending &= w.pending - 1u;
   rpcfAddTests(w, tap);
   w.next = tap + 1;
-  w.tapUv = w.uv + vec2(tap - h, w.y) * (1.0 / vec2(uShadowMapSize));
+  w.tapUv = kernelTapUv(w.uv, tap - h, w.y);
   return true;
 }
 
