@@ -20,7 +20,7 @@ class PercentageCloserFiltering final : public ShadowMapScreenTechnique {
       i.output = OutputKind::Filtered;
       i.citation = "Reeves, Salesin, Cook, Rendering antialiased shadows with depth maps, SIGGRAPH 1987";
       i.summary = "percentage-closer filtering: fraction of k×k nearest depth tests that are lit";
-      auto kernel = ParameterSpec::integer("kernel", 3, 1, 17, "filter width k in texels (k×k taps, odd)");
+      auto kernel = ParameterSpec::integer("kernel", 3, 1, 31, "filter width k in texels (k×k taps, odd)");
       kernel.oddOnly = true;  // odd so the block is centred on the receiver's texel
       i.parameters = {
           kernel,

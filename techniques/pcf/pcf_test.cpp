@@ -62,12 +62,13 @@ TEST_F(PcfImage, KernelOneEqualsShadowMappingPixelForPixel) {
 }
 
 // Values are in [0, 1], defined on every receiver, and for the box filter a whole number
-// of lit taps over k²; some are strictly between 0 and 1 (it does filter).
+// of lit taps over k²; some are strictly between 0 and 1 (it does filter). 31 is the widest
+// kernel (the EDTSM* paper's 31²).
 TEST_F(PcfImage, BoxFilterValuesAreMultiplesOfOneOverKSquared) {
   const Scene scene = bundledScene("wall");
   FrameRunner runner(scene, smallSettings(512));
   const ImageF& positions = runner.positions();
-  for (const int k : {3, 5}) {
+  for (const int k : {3, 5, 31}) {
     SCOPED_TRACE("kernel " + std::to_string(k));
     const ImageF v = runTechnique(runner, "pcf", {{"kernel", std::to_string(k)}}).visibility;
     int partial = 0, offGrid = 0, outOfRange = 0, nanOnReceiver = 0;
@@ -164,14 +165,15 @@ TEST(PcfGroundTruth, DragonSun) { checkAgainstGroundTruth("dragon_sun"); }
 
 TEST(PcfParameters, RejectsEvenAndOutOfRangeKernels) {
   const auto& specs = findTechnique("pcf").info->parameters;
-  for (const char* kernel : {"4", "19", "0", "-1", "2.5"})
+  for (const char* kernel : {"4", "33", "0", "-1", "2.5"})
     EXPECT_THROW(resolveParameters("pcf", specs, {{"kernel", kernel}}), InputError) << "kernel=" << kernel;
   EXPECT_THROW(resolveParameters("pcf", specs, {{"bias", "2"}}), InputError);
   const ParameterSet defaults = resolveParameters("pcf", specs, {});
   EXPECT_EQ(defaults.getInt("kernel"), 3);
   EXPECT_FALSE(defaults.getBool("bilinear"));
   EXPECT_EQ(defaults.getFloat("bias"), 0.0);
-  EXPECT_EQ(resolveParameters("pcf", specs, {{"kernel", "17"}}).getInt("kernel"), 17);
+  // The widest: the EDTSM* paper's 31².
+  EXPECT_EQ(resolveParameters("pcf", specs, {{"kernel", "31"}}).getInt("kernel"), 31);
 }
 
 TEST(PcfParameters, IsAFilteredTechniqueOfItsOwnFamily) {

@@ -4,7 +4,7 @@
 #include "testbed/glsl/kernel.glsl"
 
 uniform float uBias;
-uniform int uKernel;    // odd, 1..17
+uniform int uKernel;    // odd, 1..31
 uniform int uBilinear;  // 0: box of nearest tests, 1: bilinear-weighted taps
 
 // k×k nearest tests centred on the texel holding `uv` (testbed/glsl/kernel.glsl).

@@ -8,7 +8,7 @@
 namespace testbed {
 namespace {
 
-constexpr int kMaxBlur = 15;  // blur.frag holds kMaxBlur / 2 + 1 weights
+constexpr int kMaxBlur = 17;  // GI 2016 Table 5 prefilters 17×17
 
 }  // namespace
 

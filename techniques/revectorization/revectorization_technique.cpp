@@ -28,7 +28,7 @@ ParameterSpec visibilityParameter() {
 }
 
 ParameterSpec kernelParameter() {
-  auto kernel = ParameterSpec::integer("kernel", 3, 1, 17, "filter width k in texels (k×k revectorized taps, odd)");
+  auto kernel = ParameterSpec::integer("kernel", 3, 1, 31, "filter width k in texels (k×k revectorized taps, odd)");
   kernel.oddOnly = true;  // odd so the block is centred on the receiver's texel
   return kernel;
 }
