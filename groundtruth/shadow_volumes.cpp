@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "groundtruth/volume_geometry.h"
+#include "testbed/gl/render_target.h"
 #include "testbed/render/gbuffer_pass.h"
 #include "testbed/render/receiver_inputs.h"
 #include "testbed/render/screen_pass.h"
@@ -119,14 +120,8 @@ class ShadowVolumes final : public ShadowTechnique {
       resolveProgram_ = Program::graphics("testbed/render/fullscreen.vert", "groundtruth/volume_visibility.frag");
       vertexArray_ = VertexArray::create();
     }
-    if (!stencil_ || stencil_.width() != in.size.x || stencil_.height() != in.size.y || target_ != out.texture.id()) {
-      stencil_ = Texture::create2D(GL_DEPTH24_STENCIL8, in.size.x, in.size.y);
-      framebuffer_ = Framebuffer::create();
-      framebuffer_.attachColor(0, out.texture);
-      glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, stencil_.id(), 0);
-      framebuffer_.finish({0});
-      target_ = out.texture.id();
-    }
+    // The visibility target, and a stencil buffer for the volume counts.
+    target_.ensure({.size = in.size, .depth = GL_DEPTH24_STENCIL8, .borrowedColor = &out.texture});
   }
 
   // Builds the volumes of every object for one light sample and uploads them.
@@ -158,9 +153,9 @@ class ShadowVolumes final : public ShadowTechnique {
   }
 
   void countVolumes(const FrameInputs& in, const glm::vec3& camera, GLsizei vertexCount) {
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+    glBindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer().id());
     glViewport(0, 0, in.size.x, in.size.y);
-    glClearNamedFramebufferfi(framebuffer_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    glClearNamedFramebufferfi(target_.framebuffer().id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
     glDisable(GL_DEPTH_TEST);  // the fragment shader does the exact "behind" test
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
@@ -201,9 +196,7 @@ class ShadowVolumes final : public ShadowTechnique {
   Program countProgram_, resolveProgram_;
   VertexArray vertexArray_;
   Buffer buffer_;
-  Texture stencil_;
-  Framebuffer framebuffer_;
-  GLuint target_ = 0;
+  RenderTarget target_;
   std::vector<VolumeVertex> vertices_;
   std::vector<MeshTopology> topologies_;
   const Scene* topologyOf_ = nullptr;

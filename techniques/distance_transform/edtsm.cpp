@@ -25,18 +25,10 @@ void EdtShadowMapping::configure(const ParameterSet& values) {
 }
 
 void EdtShadowMapping::allocate(glm::ivec2 size) {
-  if (hard_.texture && hard_.texture.width() == size.x && hard_.texture.height() == size.y) return;
-  auto make = [&](GLenum format) {
-    ScreenTexture t{Texture::create2D(format, size.x, size.y), Framebuffer::create()};
-    t.texture.setFilter(GL_NEAREST, GL_NEAREST);
-    t.target.attachColor(0, t.texture);
-    t.target.finish({0});
-    return t;
-  };
-  hard_ = make(GL_RG32F);
-  seeds_ = make(GL_R8);
-  intensity_ = make(GL_RG32F);
-  filtered_ = make(GL_RG32F);
+  hard_.ensure({.size = size, .color = GL_RG32F});
+  seeds_.ensure({.size = size, .color = GL_R8});
+  intensity_.ensure({.size = size, .color = GL_RG32F});
+  filtered_.ensure({.size = size, .color = GL_RG32F});
 }
 
 void EdtShadowMapping::bindScreenInputs(const Program& program, const FrameInputs& in) const {
@@ -57,35 +49,35 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
   shadowMap_.render(in, timer);
   {
     auto scope = timer.scope("rbsm-classify");
-    glClearNamedFramebufferfv(hard_.target.id(), GL_COLOR, 0, noReceiver);
+    glClearNamedFramebufferfv(hard_.framebuffer().id(), GL_COLOR, 0, noReceiver);
   }
   const auto bindRbsm = [&](const Program& program) {
     bindScreenInputs(program, in);
     rbsm_.bindLibrary(program, shadowMap_.depth());
     program.set("uImproved", improved_ ? 1 : 0);
   };
-  rbsmPass_.draw(in, VisibilityTarget{hard_.target, hard_.texture}, timer, bindRbsm, "rbsm-classify", "rbsm");
-  glBindTextureUnit(4, hard_.texture.id());
+  rbsmPass_.draw(in, VisibilityTarget{hard_.framebuffer(), hard_.color()}, timer, bindRbsm, "rbsm-classify", "rbsm");
+  glBindTextureUnit(4, hard_.color().id());
   {
     auto scope = timer.scope("seeds");
     bindScreenInputs(seedsProgram_, in);
     seedsProgram_.set("uHard", 4);
-    screen_.draw(seedsProgram_, seeds_.target, in.size);
+    screen_.draw(seedsProgram_, seeds_.framebuffer(), in.size);
   }
   {
     auto scope = timer.scope("edt");
-    featureTransform_.run(seeds_.texture, in.size);
+    featureTransform_.run(seeds_.color(), in.size);
   }
   {
     auto scope = timer.scope("penumbra");
-    glClearNamedFramebufferfv(intensity_.target.id(), GL_COLOR, 0, noReceiver);
+    glClearNamedFramebufferfv(intensity_.framebuffer().id(), GL_COLOR, 0, noReceiver);
     bindScreenInputs(penumbraProgram_, in);
-    glBindTextureUnit(4, hard_.texture.id());
+    glBindTextureUnit(4, hard_.color().id());
     glBindTextureUnit(5, featureTransform_.nearest().id());
     penumbraProgram_.set("uHard", 4);
     penumbraProgram_.set("uNearestSeed", 5);
     penumbraProgram_.set("uPenumbra", parameters_.penumbra);
-    screen_.draw(penumbraProgram_, intensity_.target, in.size);
+    screen_.draw(penumbraProgram_, intensity_.framebuffer(), in.size);
   }
   {
     auto scope = timer.scope("mean-filter");
@@ -96,11 +88,11 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
     filterProgram_.set("uCameraPosition", glm::vec3(glm::inverse(in.camera.view)[3]));
     filterProgram_.set("uMaxRadius", parameters_.maxFilterRadius);
     filterProgram_.set("uIntensity", 4);
-    glClearNamedFramebufferfv(filtered_.target.id(), GL_COLOR, 0, noReceiver);
-    glBindTextureUnit(4, intensity_.texture.id());
+    glClearNamedFramebufferfv(filtered_.framebuffer().id(), GL_COLOR, 0, noReceiver);
+    glBindTextureUnit(4, intensity_.color().id());
     filterProgram_.set("uDirection", glm::ivec2(1, 0));
-    screen_.draw(filterProgram_, filtered_.target, in.size);
-    glBindTextureUnit(4, filtered_.texture.id());
+    screen_.draw(filterProgram_, filtered_.framebuffer(), in.size);
+    glBindTextureUnit(4, filtered_.color().id());
     filterProgram_.set("uDirection", glm::ivec2(0, 1));
     screen_.draw(filterProgram_, out.framebuffer, in.size);
   }

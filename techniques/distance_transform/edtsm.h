@@ -13,6 +13,7 @@
 // GI 2017: Macedo & Apolinário, "Euclidean Distance Transform Shadow Mapping", Graphics Interface 2017.
 #include "techniques/distance_transform/feature_transform.h"
 #include "techniques/revectorization/revectorization_technique.h"
+#include "testbed/gl/render_target.h"
 #include "testbed/render/screen_pass.h"
 #include "testbed/render/shadow_map_pass.h"
 #include "testbed/technique/technique.h"
@@ -37,10 +38,6 @@ class EdtShadowMapping : public ShadowTechnique {
   explicit EdtShadowMapping(bool improved) : improved_(improved) {}
 
  private:
-  struct ScreenTexture {
-    Texture texture;
-    Framebuffer target;
-  };
   void allocate(glm::ivec2 size);
   // Receivers, camera depth and the edge-awareness threshold of edtsm_screen.glsl.
   void bindScreenInputs(const Program& program, const FrameInputs& in) const;
@@ -53,7 +50,7 @@ class EdtShadowMapping : public ShadowTechnique {
   FeatureTransformPass featureTransform_;
   revectorization::EdgeSplitPass rbsmPass_{"techniques/distance_transform/edtsm_rbsm.frag"};
   Program seedsProgram_, penumbraProgram_, filterProgram_;
-  ScreenTexture hard_, seeds_, intensity_, filtered_;
+  RenderTarget hard_, seeds_, intensity_, filtered_;
 };
 
 }  // namespace testbed::distance_transform

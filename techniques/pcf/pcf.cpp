@@ -17,7 +17,7 @@ class PercentageCloserFiltering final : public ShadowMapScreenTechnique {
     ShadowMapPass::Parameters shadowMap;
     void reflect(ParameterBinder& b) {
       // Odd so the block is centred on the receiver's texel.
-      b.integer("kernel", kernel, 3, 1, 17, "filter width k in texels (k×k taps, odd)").oddOnly();
+      b.integer("kernel", kernel, 3, 1, 31, "filter width k in texels (k×k taps, odd)").oddOnly();
       b.boolean("bilinear", bilinear, false, "weight each tap bilinearly over its 4 nearest texels ((k+1)² tests)");
       reflectShadowTestBias(b, bias);
       shadowMap.reflect(b);

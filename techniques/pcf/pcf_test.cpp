@@ -80,11 +80,11 @@ PcfValues pcfValues(FrameRunner& runner, int k, bool bilinear) {
 
 // Values are in [0, 1] and defined on every receiver. The box filter's are a whole number
 // of lit taps over k², some strictly between 0 and 1 (it does filter); bilinear taps give
-// continuous values, off that grid.
+// continuous values, off that grid. 31 is the widest kernel (the EDTSM* paper's 31²).
 TEST_F(PcfImage, ValuesAreInTheUnitIntervalAndTheBoxFilterCountsLitTaps) {
   const Scene scene = bundledScene("wall");
   FrameRunner runner(scene, smallSettings(512));
-  for (const auto& [k, bilinear] : {std::pair{3, false}, std::pair{5, false}, std::pair{1, true}, std::pair{3, true}}) {
+  for (const auto& [k, bilinear] : {std::pair{3, false}, std::pair{5, false}, std::pair{31, false}, std::pair{1, true}, std::pair{3, true}}) {
     SCOPED_TRACE("kernel " + std::to_string(k) + (bilinear ? " bilinear" : " box"));
     const PcfValues values = pcfValues(runner, k, bilinear);
     EXPECT_EQ(values.nanOnReceiver, 0);
@@ -144,14 +144,15 @@ TEST(PcfGroundTruth, DragonSun) { checkAgainstGroundTruth("dragon_sun"); }
 
 TEST(PcfParameters, RejectsEvenAndOutOfRangeKernels) {
   const auto& specs = findTechnique("pcf").info->parameters;
-  for (const char* kernel : {"4", "19", "0", "-1", "2.5"})
+  for (const char* kernel : {"4", "33", "0", "-1", "2.5"})
     EXPECT_THROW(resolveParameters("pcf", specs, {{"kernel", kernel}}), InputError) << "kernel=" << kernel;
   EXPECT_THROW(resolveParameters("pcf", specs, {{"bias", "2"}}), InputError);
   const ParameterSet defaults = resolveParameters("pcf", specs, {});
   EXPECT_EQ(defaults.getInt("kernel"), 3);
   EXPECT_FALSE(defaults.getBool("bilinear"));
   EXPECT_EQ(defaults.getFloat("bias"), 0.0);
-  EXPECT_EQ(resolveParameters("pcf", specs, {{"kernel", "17"}}).getInt("kernel"), 17);
+  // The widest: the EDTSM* paper's 31².
+  EXPECT_EQ(resolveParameters("pcf", specs, {{"kernel", "31"}}).getInt("kernel"), 31);
 }
 
 TEST(PcfParameters, IsAFilteredTechniqueOfItsOwnFamily) {

@@ -1,24 +1,15 @@
 #version 450 core
 #include "testbed/glsl/receiver.glsl"
 #include "testbed/glsl/shadow_test.glsl"
+#include "testbed/glsl/kernel.glsl"
 
 uniform float uBias;
-uniform int uKernel;    // odd, 1..17
+uniform int uKernel;    // odd, 1..31
 uniform int uBilinear;  // 0: box of nearest tests, 1: bilinear-weighted taps
-layout(location = 0) out float outVisibility;
 
-// k×k nearest tests centred on the texel holding `uv`. Each tap moves uv by whole texels
-// and lets the sampler pick the texel, so the centre tap is exactly sm's lookup (kernel 1
-// == sm bit for bit, whatever rounding the texture unit applies to uv·size) and the others
-// are its neighbours.
-float boxPcf(vec2 uv, float depth) {
-  int h = uKernel / 2;
-  vec2 texel = 1.0 / vec2(uShadowMapSize);
-  float lit = 0.0;
-  for (int y = -h; y <= h; ++y)
-    for (int x = -h; x <= h; ++x) lit += shadowTest(uv + vec2(x, y) * texel, depth, uBias);
-  return lit / float(uKernel * uKernel);
-}
+// k×k nearest tests centred on the texel holding `uv` (testbed/glsl/kernel.glsl).
+float boxTap(vec2 uv, float depth) { return shadowTest(uv, depth, uBias); }
+DEFINE_KERNEL_MEAN(boxPcf, boxTap)
 
 // The k×k taps each bilinearly interpolate the tests of their 4 nearest texels. Summed,
 // that is (k+1)×(k+1) tests with separable weights: the first row/column weighs 1 − f,
@@ -41,13 +32,8 @@ float bilinearPcf(vec2 uv, float depth) {
   return clamp(lit / float(uKernel * uKernel), 0.0, 1.0);
 }
 
-void main() {
-  Receiver r;
-  if (!loadReceiver(ivec2(gl_FragCoord.xy), r)) discard;
-  if (facesAwayFromLight(r)) {
-    outVisibility = 0.0;
-    return;
-  }
-  vec3 light = lightSpace(r.position);
-  outVisibility = uBilinear == 1 ? bilinearPcf(light.xy, light.z) : boxPcf(light.xy, light.z);
+float screenVisibility(ivec2 pixel, Receiver r, vec3 light) {
+  return uBilinear == 1 ? bilinearPcf(light.xy, light.z) : boxPcf(light.xy, light.z);
 }
+
+#include "testbed/glsl/screen_pass.glsl"

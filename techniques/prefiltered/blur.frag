@@ -5,7 +5,7 @@
 // are compile-time constants (moments_pass.cpp builds one program per direction), so the
 // loop unrolls into straight fetches: the same sums in the same order as a loop.
 uniform sampler2D uSource;
-uniform float uWeights[8];
+uniform float uWeights[BLUR_RADIUS + 1];
 layout(location = 0) out vec4 outMoments;
 void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);

@@ -8,7 +8,7 @@
 namespace testbed {
 namespace {
 
-constexpr int kMaxBlur = 15;  // blur.frag holds kMaxBlur / 2 + 1 weights
+constexpr int kMaxBlur = 17;  // GI 2016 Table 5 prefilters 17×17
 
 }  // namespace
 
@@ -39,41 +39,26 @@ std::vector<float> MomentsPass::blurWeights(int size) {
   return weights;
 }
 
-void MomentsPass::allocate(const FrameInputs& in, const MomentsFormat& format) {
-  const int n = in.shadowMapSize;
-  // levels 0 = the full chain, booked in the ledger like any other level.
-  moments_ = Texture::create2D(format.internalFormat, n, n, parameters_.mips ? 0 : 1);
-  moments_.setFilter(parameters_.mips ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
-  depth_ = Texture::create2D(depthFormat_, n, n);
-  momentsTarget_ = Framebuffer::create();
-  momentsTarget_.attachColor(0, moments_);
-  momentsTarget_.attachDepth(depth_);
-  momentsTarget_.finish({0});
-  if (parameters_.blur > 1) {
-    pingPong_ = Texture::create2D(format.internalFormat, n, n);
-    pingPongTarget_ = Framebuffer::create();
-    pingPongTarget_.attachColor(0, pingPong_);
-    pingPongTarget_.finish({0});
-  } else {
-    pingPong_ = Texture();
-    pingPongTarget_ = Framebuffer();
-  }
-}
-
 void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsFormat& format,
                          const glm::vec4& params) {
-  const GLenum depthFormat = depthInternalFormat(in.depthFormat);
   if (!encode_ || format != format_) {
     encode_ = Program::graphics("techniques/prefiltered/moments.vert", "techniques/prefiltered/moments.frag",
                                 format.defines());
     clear_ = Program::graphics("techniques/prefiltered/far_plane.vert", "techniques/prefiltered/moments.frag",
                                format.defines());
-  }
-  if (!moments_ || moments_.width() != in.shadowMapSize || format != format_ || depthFormat != depthFormat_) {
     format_ = format;
-    depthFormat_ = depthFormat;
-    allocate(in, format);
   }
+  const glm::ivec2 size(in.shadowMapSize);
+  // colorLevels 0 = the full chain, booked in the ledger like any other level.
+  if (moments_.ensure({.size = size,
+                       .color = format.internalFormat,
+                       .colorLevels = parameters_.mips ? 0 : 1,
+                       .depth = depthInternalFormat(in.depthFormat)}))
+    moments_.color().setFilter(parameters_.mips ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
+  if (parameters_.blur > 1)
+    pingPong_.ensure({.size = size, .color = format.internalFormat});
+  else
+    pingPong_ = RenderTarget();
   if (parameters_.blur > 1 && blurProgramRadius_ != parameters_.blur / 2) {
     const auto blurProgram = [&](const char* step) {
       const std::string defines =
@@ -84,17 +69,16 @@ void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsF
     blurColumns_ = blurProgram("ivec2(0, 1)");
     blurProgramRadius_ = parameters_.blur / 2;
   }
-  const glm::ivec2 size(in.shadowMapSize);
 
   {
     auto scope = timer.scope("moments");
     clear_.set("uParams", params);
     const float farDepth = 1.0f;
     glDepthMask(GL_TRUE);  // the clear obeys the write mask
-    glClearNamedFramebufferfv(momentsTarget_.id(), GL_DEPTH, 0, &farDepth);
-    screen_.draw(clear_, momentsTarget_, size);  // depth test off: colour only
+    glClearNamedFramebufferfv(moments_.framebuffer().id(), GL_DEPTH, 0, &farDepth);
+    screen_.draw(clear_, moments_.framebuffer(), size);  // depth test off: colour only
 
-    glBindFramebuffer(GL_FRAMEBUFFER, momentsTarget_.id());
+    glBindFramebuffer(GL_FRAMEBUFFER, moments_.framebuffer().id());
     glViewport(0, 0, size.x, size.y);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -118,12 +102,12 @@ void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsF
       glProgramUniform1fv(program->id(), program->location("uWeights"), GLsizei(weights.size()), weights.data());
       program->set("uSource", 0);
     }
-    glBindTextureUnit(0, moments_.id());
-    screen_.draw(blurRows_, pingPongTarget_, size);
-    glBindTextureUnit(0, pingPong_.id());
-    screen_.draw(blurColumns_, momentsTarget_, size);
+    glBindTextureUnit(0, moments_.color().id());
+    screen_.draw(blurRows_, pingPong_.framebuffer(), size);
+    glBindTextureUnit(0, pingPong_.color().id());
+    screen_.draw(blurColumns_, moments_.framebuffer(), size);
   }
-  if (parameters_.mips) glGenerateTextureMipmap(moments_.id());
+  if (parameters_.mips) glGenerateTextureMipmap(moments_.color().id());
 }
 
 }  // namespace testbed

@@ -15,6 +15,7 @@
 #include "techniques/prefiltered/moments_format.h"
 #include "testbed/gl/objects.h"
 #include "testbed/gl/pass_timer.h"
+#include "testbed/gl/render_target.h"
 #include "testbed/gl/depth_format.h"
 #include "testbed/render/screen_pass.h"
 #include "testbed/technique/parameter_binder.h"
@@ -35,7 +36,7 @@ class MomentsPass {
   // Renders and filters the moments; `params` goes to the format's encode function.
   void render(const FrameInputs& in, PassTimer& timer, const MomentsFormat& format, const glm::vec4& params);
   // The filtered moments: bilinear (trilinear with mips), clamped to the edge.
-  const Texture& moments() const { return moments_; }
+  const Texture& moments() const { return moments_.color(); }
 
   // The kernel's weights by |offset| (0 .. size/2): binomial coefficients C(size−1, k) /
   // 2^(size−1), the discrete Gaussian of variance (size−1)/4; size 3 is the papers' 3×3
@@ -43,13 +44,10 @@ class MomentsPass {
   static std::vector<float> blurWeights(int size);
 
  private:
-  void allocate(const FrameInputs& in, const MomentsFormat& format);
-
   Parameters parameters_{};
   MomentsFormat format_;
-  GLenum depthFormat_ = 0;
-  Texture moments_, pingPong_, depth_;
-  Framebuffer momentsTarget_, pingPongTarget_;
+  RenderTarget moments_;   // the moments and the light's depth buffer
+  RenderTarget pingPong_;  // the blur's row pass, with blur > 1
   Program encode_, clear_, blurRows_, blurColumns_;
   int blurProgramRadius_ = 0;  // the radius blurRows_ and blurColumns_ were built for
   ScreenPass screen_;

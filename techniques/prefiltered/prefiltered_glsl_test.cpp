@@ -5,13 +5,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "techniques/prefiltered/moments_pass.h"
 #include "testbed/gl/objects.h"
+#include "testbed/gl/render_target.h"
 #include "testbed/render/screen_pass.h"
 #include "tests/gl_fixture.h"
 
@@ -331,6 +334,35 @@ TEST(MsmGlsl, DegenerateMomentsStayFinite) {
   for (std::size_t i = 0; i < a.size(); ++i)
     EXPECT_TRUE(v[i] >= 0.0f && v[i] <= 1.0f) << "moments (" << a[i].x << ", " << a[i].y << ", " << a[i].z << ", "
                                               << a[i].w << ") t " << b[i].x << " alpha " << b[i].y << ": " << v[i];
+}
+
+// blur.frag at the widest kernel, 17 (GI 2016 Table 5's 17×17 pre-filtering), against a
+// direct convolution: an impulse comes out as the kernel's weights, the outer ones too.
+TEST(BlurGlsl, WidestKernelSpreadsAnImpulseIntoItsWeights) {
+  test::sharedContext();
+  constexpr int n = 32, centre = 16;
+  const std::vector<float> weights = MomentsPass::blurWeights(17);
+  const int radius = static_cast<int>(weights.size()) - 1;
+  std::vector<glm::vec4> impulse(n * n, glm::vec4(0.0f));
+  impulse[centre * n + centre] = glm::vec4(1.0f);
+  Texture source = Texture::create2D(GL_RGBA32F, n, n);
+  glTextureSubImage2D(source.id(), 0, 0, 0, n, n, GL_RGBA, GL_FLOAT, impulse.data());
+  RenderTarget target;
+  target.ensure({.size = {n, n}, .color = GL_RGBA32F});
+  const Program rows = Program::graphics("testbed/render/fullscreen.vert", "techniques/prefiltered/blur.frag",
+                                         "#define BLUR_RADIUS " + std::to_string(radius) +
+                                             "\n#define BLUR_STEP ivec2(1, 0)\n");
+  glProgramUniform1fv(rows.id(), rows.location("uWeights"), GLsizei(weights.size()), weights.data());
+  rows.set("uSource", 0);
+  glBindTextureUnit(0, source.id());
+  ScreenPass().draw(rows, target.framebuffer(), {n, n});
+  const std::vector<float> out = target.color().readFloats(4);
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const int d = std::abs(x - centre);
+      const float expected = y == centre && d <= radius ? weights[std::size_t(d)] : 0.0f;
+      EXPECT_EQ(out[std::size_t(y * n + x) * 4], expected) << "texel " << x << ", " << y;
+    }
 }
 
 }  // namespace

@@ -42,7 +42,7 @@ TEST(PrefilteredParameters, BadValuesAreRejected) {
   const std::vector<std::pair<std::string, std::map<std::string, std::string>>> bad{
       {"vsm", {{"blur", "4"}}},                  // even kernel
       {"vsm", {{"blur", "0"}}},
-      {"msm", {{"blur", "17"}}},                 // beyond 15
+      {"msm", {{"blur", "19"}}},                 // beyond 17
       {"vsm", {{"mips", "maybe"}}},
       {"vsm", {{"min_variance", "-1e-6"}}},
       {"vsm", {{"bleed_reduction", "1"}}},       // linstep(1, 1, p) divides by zero
@@ -58,7 +58,7 @@ TEST(PrefilteredParameters, BadValuesAreRejected) {
   };
   for (const auto& [id, raw] : bad)
     EXPECT_THROW(resolve(id, raw), InputError) << id << " " << raw.begin()->first << "=" << raw.begin()->second;
-  EXPECT_NO_THROW(resolve("vsm", {{"blur", "15"}, {"mips", "true"}}));
+  EXPECT_NO_THROW(resolve("vsm", {{"blur", "17"}, {"mips", "true"}}));  // GI 2016 Table 5's 17×17
   EXPECT_NO_THROW(resolve("evsm", {{"moments", "2"}, {"positive_exponent", "42"}}));
   EXPECT_NO_THROW(resolve("msm", {{"storage", "32"}, {"blur", "1"}}));
 }
@@ -76,6 +76,11 @@ TEST(PrefilteredParameters, BlurWeightsAreTheBinomialGaussian) {
   double total = fifteen[0];
   for (std::size_t k = 1; k < fifteen.size(); ++k) total += 2.0 * fifteen[k];
   EXPECT_NEAR(total, 1.0, 1e-6);
+  // The widest, 17 (GI 2016 Table 5): C(16, 8 + k) / 2^16, exact in float.
+  const std::vector<float> binomial{12870, 11440, 8008, 4368, 1820, 560, 120, 16, 1};
+  std::vector<float> expected;
+  for (const float c : binomial) expected.push_back(c / 65536.0f);
+  EXPECT_EQ(MomentsPass::blurWeights(17), expected);
 }
 
 TEST(PrefilteredParameters, MemoryIsTheMomentsTheirMipsThePingPongAndTheDepth) {

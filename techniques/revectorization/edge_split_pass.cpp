@@ -11,20 +11,14 @@ void EdgeSplitPass::setDefines(const std::string& defines) {
 
 void EdgeSplitPass::prepare(const VisibilityTarget& out) {
   if (!classify_) {
-    classify_ = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_, defines_ + "#define RV_CLASSIFY 1\n");
-    edges_ = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_, defines_);
+    classify_ = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_,
+                                  defines_ + "#define SCREEN_PASS_CLASSIFY 1\n");
+    edges_ = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_, defines_ + "#define SCREEN_PASS_MARKED 1\n");
     empty_ = VertexArray::create();
   }
-  const Texture& visibility = out.texture;
-  if (marks_ && marks_.width() == visibility.width() && marks_.height() == visibility.height() &&
-      targetTexture_ == visibility.id())
-    return;
-  marks_ = Texture::create2D(GL_DEPTH_COMPONENT16, visibility.width(), visibility.height());
-  target_ = Framebuffer::create();
-  target_.attachColor(0, visibility);
-  target_.attachDepth(marks_);
-  target_.finish({0});
-  targetTexture_ = visibility.id();
+  // Depth 0 marks an edge pixel, 1 one the classifying draw answered.
+  const glm::ivec2 size(out.texture.width(), out.texture.height());
+  target_.ensure({.size = size, .depth = GL_DEPTH_COMPONENT16, .borrowedColor = &out.texture});
 }
 
 void EdgeSplitPass::drawScreen(const Program& program, glm::ivec2 size) const {
@@ -40,12 +34,12 @@ void EdgeSplitPass::draw(const FrameInputs& in, const VisibilityTarget& out, Pas
                          const std::function<void(const Program&)>& bind, const std::string& classifyPass,
                          const std::string& edgePass) {
   prepare(out);
-  glBindFramebuffer(GL_FRAMEBUFFER, target_.id());
+  glBindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer().id());
   glEnable(GL_DEPTH_TEST);
   {
     auto scope = timer.scope(classifyPass);
     const float farthest = 1.0f;
-    glClearNamedFramebufferfv(target_.id(), GL_DEPTH, 0, &farthest);
+    glClearNamedFramebufferfv(target_.framebuffer().id(), GL_DEPTH, 0, &farthest);
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_ALWAYS);
     bind(classify_);

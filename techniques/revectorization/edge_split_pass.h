@@ -1,5 +1,5 @@
 #pragma once
-// The revectorization screen pass drawn in two steps (revectorization_screen.glsl): a
+// A screen pass drawn in two steps (testbed/glsl/screen_pass.glsl's SCREEN_PASS_CLASSIFY): a
 // cheap draw of every pixel that answers the shadow test where no edge texel is involved
 // and marks the rest in a depth buffer, then the full visibility on the marked pixels
 // only. The early depth test drops unmarked pixels before their shader runs, which is
@@ -10,13 +10,15 @@
 
 #include "testbed/gl/objects.h"
 #include "testbed/gl/pass_timer.h"
+#include "testbed/gl/render_target.h"
 #include "testbed/technique/technique.h"
 
 namespace testbed::revectorization {
 
 class EdgeSplitPass {
  public:
-  // `fragmentKey`: a shader ending in revectorization_screen.glsl.
+  // `fragmentKey`: a shader defining screenClassify and screenVisibility, ending in
+  // testbed/glsl/screen_pass.glsl.
   explicit EdgeSplitPass(std::string fragmentKey) : fragmentKey_(std::move(fragmentKey)) {}
 
   // Prepended to both programs' sources (after #version); a change rebuilds them.
@@ -33,9 +35,7 @@ class EdgeSplitPass {
 
   std::string fragmentKey_, defines_;
   Program classify_, edges_;
-  Texture marks_;  // depth 0: edge pixel, 1: answered by the classifying draw
-  Framebuffer target_;
-  GLuint targetTexture_ = 0;
+  RenderTarget target_;  // the visibility target and its marks (a 16-bit depth texture)
   VertexArray empty_;
 };
 

@@ -2,7 +2,8 @@
 // Unit-test probe (revectorization_glsl_test.cpp): evaluates the real visibility functions
 // of the family for a list of light-space samples (uv, light depth), without a G-buffer.
 // uFunction: 0 shadow test, 1 smsr, 2 rsmss, 3 rpcf-smsr, 4 rpcf-rsmss (uImproved and
-// uKernel as the techniques set them).
+// uKernel as the techniques set them); 5 rpcf-smsr and 6 rpcf-rsmss as their screen pass
+// computes them (classified from the row masks, else the edge taps only).
 layout(local_size_x = 64) in;
 #include "techniques/revectorization/rpcf_smsr.glsl"
 #include "techniques/revectorization/rpcf_rsmss.glsl"
@@ -23,6 +24,8 @@ void main() {
     case 2: v = rsmssVisibility(uv, z); break;
     case 3: v = rpcfSmsrVisibility(uv, z); break;
     case 4: v = rpcfRsmssVisibility(uv, z); break;
+    case 5: if (!rpcfSmsrClassify(uv, z, v)) v = rpcfSmsrEdgeVisibility(uv, z); break;
+    case 6: if (!rpcfRsmssClassify(uv, z, v)) v = rpcfRsmssEdgeVisibility(uv, z); break;
     default: v = shadowTest(uv, z, uBias); break;
   }
   results[i] = v;

@@ -23,7 +23,10 @@ constexpr int kSize = 32;
 constexpr int kPerTexel = 8;  // samples per texel side
 constexpr float kOccluder = 0.2f, kReceiver = 0.5f;
 
-enum Function { kShadowTest = 0, kSmsr = 1, kRsmss = 2, kRpcfSmsr = 3, kRpcfRsmss = 4 };
+enum Function {
+  kShadowTest = 0, kSmsr = 1, kRsmss = 2, kRpcfSmsr = 3, kRpcfRsmss = 4,
+  kRpcfSmsrScreen = 5, kRpcfRsmssScreen = 6,  // as the screen pass computes them
+};
 
 struct Options {
   bool improved = false;
@@ -36,32 +39,32 @@ using Shape = std::function<bool(double, double)>;
 
 class Probe {
  public:
-  Probe() {
+  explicit Probe(int size = kSize) : size_(size) {
     test::sharedContext();
     program_ = Program::compute("techniques/revectorization/probe.comp");
-    map_ = Texture::create2D(GL_R32F, kSize, kSize);
+    map_ = Texture::create2D(GL_R32F, size, size);
     map_.setFilter(GL_NEAREST, GL_NEAREST);
     map_.setWrap(GL_CLAMP_TO_BORDER, glm::vec4(0.0f));
   }
 
   // Rasterizes the shape at texel centres (what the shadow-map pass does).
   void upload(const Shape& occluded) {
-    std::vector<float> depth(kSize * kSize);
-    for (int y = 0; y < kSize; ++y)
-      for (int x = 0; x < kSize; ++x) depth[y * kSize + x] = occluded(x + 0.5, y + 0.5) ? kOccluder : kReceiver;
-    glTextureSubImage2D(map_.id(), 0, 0, 0, kSize, kSize, GL_RED, GL_FLOAT, depth.data());
+    std::vector<float> depth(std::size_t(size_) * size_);
+    for (int y = 0; y < size_; ++y)
+      for (int x = 0; x < size_; ++x) depth[y * size_ + x] = occluded(x + 0.5, y + 0.5) ? kOccluder : kReceiver;
+    glTextureSubImage2D(map_.id(), 0, 0, 0, size_, size_, GL_RED, GL_FLOAT, depth.data());
   }
 
   // Visibility at light-space points given in texel units.
   std::vector<float> run(Function function, const std::vector<glm::vec2>& points, const Options& o = {}) {
     std::vector<glm::vec4> samples;
-    for (const auto& p : points) samples.emplace_back(p / float(kSize), kReceiver, 0.0f);
+    for (const auto& p : points) samples.emplace_back(p / float(size_), kReceiver, 0.0f);
     Buffer in = Buffer::create(samples.size() * sizeof(glm::vec4), samples.data());
     Buffer out = Buffer::create(samples.size() * sizeof(float), nullptr);
     program_.use();
     glBindTextureUnit(2, map_.id());
     program_.set("uShadowMap", 2);
-    program_.set("uShadowMapSize", glm::ivec2(kSize));
+    program_.set("uShadowMapSize", glm::ivec2(size_));
     program_.set("uMaxSearch", o.maxSearch);
     program_.set("uEpsilon", 2.5e-5f);
     program_.set("uBias", 0.0f);
@@ -80,6 +83,7 @@ class Probe {
   }
 
  private:
+  int size_;
   Program program_;
   Texture map_;
 };
@@ -379,6 +383,52 @@ TEST(RevectorizationGlsl, RpcfWithKernelOneEqualsItsBase) {
     // A wider kernel filters: values strictly between 0 and 1 appear.
     EXPECT_GT(strictlyBetween(p.run(kRpcfSmsr, points, {.kernel = 3})), 0);
   });
+}
+
+// The widest kernels (31², the EDTSM* paper's largest, and 29²) on a map wide enough for
+// the block and its rim: the screen pass's row masks classify and walk the edge taps of a
+// whole row in one word, and give the plain k×k loop's very number; that loop is the mean
+// of the base function at the k² taps, summed row by row here on the CPU.
+TEST(RevectorizationGlsl, WidestRpcfKernelsAreTheMeanOfTheirTaps) {
+  constexpr int kWide = 64;
+  static Probe p(kWide);
+  std::vector<glm::vec2> points;  // receivers whose 31×31 block and rim lie inside the map
+  for (int y = 16; y < 48; y += 3)
+    for (int x = 16; x < 48; x += 3) points.emplace_back(x + 0.5137f, y + 0.4871f);
+  const std::vector<Edge> edges = staircases();
+  for (std::size_t e = 0; e < edges.size(); e += 3) {  // every orientation, most slopes
+    const Edge& edge = edges[e];
+    SCOPED_TRACE(edge.name);
+    p.upload(edge.occluded);
+    for (const int k : {29, 31}) {
+      SCOPED_TRACE("kernel " + std::to_string(k));
+      const int h = k / 2;
+      std::vector<glm::vec2> taps;
+      for (const auto& q : points)
+        for (int dy = -h; dy <= h; ++dy)
+          for (int dx = -h; dx <= h; ++dx) taps.push_back(q + glm::vec2(dx, dy));
+      struct Variant {
+        Function base, plain, screen;
+        bool improved;
+      };
+      for (const Variant& v : {Variant{kSmsr, kRpcfSmsr, kRpcfSmsrScreen, false},
+                               Variant{kSmsr, kRpcfSmsr, kRpcfSmsrScreen, true},
+                               Variant{kRsmss, kRpcfRsmss, kRpcfRsmssScreen, false}}) {
+        const Options o{.improved = v.improved, .kernel = k};
+        const std::vector<float> atTaps = p.run(v.base, taps, o);
+        const std::vector<float> plain = p.run(v.plain, points, o);
+        EXPECT_EQ(p.run(v.screen, points, o), plain);
+        int partial = 0;
+        for (std::size_t i = 0; i < points.size(); ++i) {
+          float sum = 0.0f;
+          for (int t = 0; t < k * k; ++t) sum += atTaps[i * std::size_t(k * k) + std::size_t(t)];
+          EXPECT_NEAR(plain[i], sum / float(k * k), 1e-6f) << "receiver " << i;
+          partial += plain[i] > 0.0f && plain[i] < 1.0f;
+        }
+        EXPECT_GT(partial, 0);  // the blocks do straddle the edge
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -29,7 +29,7 @@ void reflectVisibility(ParameterBinder& b, bool& improved) {
 
 void reflectKernel(ParameterBinder& b, int& kernel) {
   // Odd so the block is centred on the receiver's texel.
-  b.integer("kernel", kernel, 3, 1, 17, "filter width k in texels (k×k revectorized taps, odd)").oddOnly();
+  b.integer("kernel", kernel, 3, 1, 31, "filter width k in texels (k×k revectorized taps, odd)").oddOnly();
 }
 
 void Common::bindLibrary(const Program& program, const Texture& shadowMap) const {
@@ -55,16 +55,11 @@ void Common::renderDebug(const FrameInputs& in, const Texture& shadowMap, bool b
 }
 
 void Common::renderDebugWith(const Program& program, glm::ivec2 size) {
-  if (!debugTexture_ || debugTexture_.width() != size.x || debugTexture_.height() != size.y) {
-    debugTexture_ = Texture::create2D(GL_RGBA8, size.x, size.y);
-    debugTarget_ = Framebuffer::create();
-    debugTarget_.attachColor(0, debugTexture_);
-    debugTarget_.finish({0});
-  }
+  debugTarget_.ensure({.size = size, .color = GL_RGBA8});
   const float black[4] = {0, 0, 0, 1};
-  glClearNamedFramebufferfv(debugTarget_.id(), GL_COLOR, 0, black);
-  screen_.draw(program, debugTarget_, size);
-  captureDebug(debugTexture_, size);
+  glClearNamedFramebufferfv(debugTarget_.framebuffer().id(), GL_COLOR, 0, black);
+  screen_.draw(program, debugTarget_.framebuffer(), size);
+  captureDebug(debugTarget_.color(), size);
 }
 
 void Common::captureDebug(const Texture& rgba8, glm::ivec2 size) {

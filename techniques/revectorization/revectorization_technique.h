@@ -52,8 +52,7 @@ class Common {
  private:
   CommonParameters parameters_{};
   Program debugProgram_;
-  Texture debugTexture_;
-  Framebuffer debugTarget_;
+  RenderTarget debugTarget_;  // RGBA8
   ScreenPass screen_;
   ImageF debugImage_;
 };

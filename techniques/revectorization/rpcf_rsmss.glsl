@@ -7,14 +7,7 @@
 
 bool rpcfRsmssClassify(vec2 uv, float depth, out float v) { return rpcfClassify(uv, depth, true, v); }
 
-float rpcfRsmssVisibility(vec2 uv, float depth) {
-  int h = uKernel / 2;
-  vec2 texel = 1.0 / vec2(uShadowMapSize);
-  float sum = 0.0;
-  for (int y = -h; y <= h; ++y)
-    for (int x = -h; x <= h; ++x) sum += rsmssVisibility(uv + vec2(x, y) * texel, depth);
-  return sum / float(uKernel * uKernel);
-}
+DEFINE_KERNEL_MEAN(rpcfRsmssVisibility, rsmssVisibility)
 
 // The same number as rpcfRsmssVisibility, computing only the edge taps (rpcfNextEdgeTap).
 float rpcfRsmssEdgeVisibility(vec2 uv, float depth) {

@@ -8,14 +8,7 @@
 
 bool rpcfSmsrClassify(vec2 uv, float depth, out float v) { return rpcfClassify(uv, depth, uImproved == 1, v); }
 
-float rpcfSmsrVisibility(vec2 uv, float depth) {
-  int h = uKernel / 2;
-  vec2 texel = 1.0 / vec2(uShadowMapSize);
-  float sum = 0.0;
-  for (int y = -h; y <= h; ++y)
-    for (int x = -h; x <= h; ++x) sum += smsrVisibility(uv + vec2(x, y) * texel, depth);
-  return sum / float(uKernel * uKernel);
-}
+DEFINE_KERNEL_MEAN(rpcfSmsrVisibility, smsrVisibility)
 
 // The same number as rpcfSmsrVisibility, computing only the edge taps (rpcfNextEdgeTap).
 float rpcfSmsrEdgeVisibility(vec2 uv, float depth) {

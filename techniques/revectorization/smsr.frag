@@ -1,12 +1,12 @@
 #version 450 core
 // Screen pass of `smsr`: the visibility function of smsr.glsl, drawn by
-// revectorization_screen.glsl (a classifying draw, then the edge pixels).
+// testbed/glsl/screen_pass.glsl (a classifying draw, then the edge pixels).
 #include "testbed/glsl/receiver.glsl"
 #include "techniques/revectorization/smsr.glsl"
 
-float rvScreenVisibility(ivec2 pixel, Receiver r, vec3 light) { return smsrVisibility(light.xy, light.z); }
-bool rvScreenClassify(ivec2 pixel, Receiver r, vec3 light, out float v) {
+float screenVisibility(ivec2 pixel, Receiver r, vec3 light) { return smsrVisibility(light.xy, light.z); }
+bool screenClassify(ivec2 pixel, Receiver r, vec3 light, out float v) {
   return smsrClassify(light.xy, light.z, v);
 }
 
-#include "techniques/revectorization/revectorization_screen.glsl"
+#include "testbed/glsl/screen_pass.glsl"

@@ -41,23 +41,13 @@ class SmsrTwoPass final : public ShadowTechnique {
       discProgram_ = Program::graphics("testbed/render/gbuffer.vert",
                                        "techniques/revectorization/smsr_2pass_discontinuity.frag");
     }
-    if (!discMap_ || discMap_.width() != in.size.x || discMap_.height() != in.size.y) {
-      discMap_ = Texture::create2D(GL_RGBA8, in.size.x, in.size.y);
-      discMap_.setFilter(GL_NEAREST, GL_NEAREST);
-      discTarget_ = Framebuffer::create();
-      discTarget_.attachColor(0, discMap_);
-      discTargetDepth_ = 0;
-    }
-    if (discTargetDepth_ != in.gbuffer.depth().id()) {  // the G-buffer's depth, read only
-      discTarget_.attachDepth(in.gbuffer.depth());
-      discTarget_.finish({0});
-      discTargetDepth_ = in.gbuffer.depth().id();
-    }
+    // The G-buffer's depth, read only: pass 1 draws where it is equal.
+    disc_.ensure({.size = in.size, .color = GL_RGBA8, .borrowedDepth = &in.gbuffer.depth()});
     shadowMap_.render(in, timer);
     {
       auto scope = timer.scope("discontinuity");
       const float clear[4] = {0, 0, 0, 0};  // a = 0: no receiver
-      glClearNamedFramebufferfv(discTarget_.id(), GL_COLOR, 0, clear);
+      glClearNamedFramebufferfv(disc_.framebuffer().id(), GL_COLOR, 0, clear);
       bindReceiverInputs(discProgram_, in);
       common_.bindLibrary(discProgram_, shadowMap_.depth());
       drawSceneAgain(in);
@@ -77,14 +67,14 @@ class SmsrTwoPass final : public ShadowTechnique {
   void bindSearchInputs(const Program& program, const FrameInputs& in) const {
     bindReceiverInputs(program, in);
     common_.bindLibrary(program, shadowMap_.depth());
-    glBindTextureUnit(3, discMap_.id());
+    glBindTextureUnit(3, disc_.color().id());
     program.set("uDiscontinuityMap", 3);
   }
 
   // The scene from the camera, as the G-buffer pass draws it (its vertex shader and state),
   // where its depth equals the G-buffer's.
   void drawSceneAgain(const FrameInputs& in) const {
-    glBindFramebuffer(GL_FRAMEBUFFER, discTarget_.id());
+    glBindFramebuffer(GL_FRAMEBUFFER, disc_.framebuffer().id());
     glViewport(0, 0, in.size.x, in.size.y);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_EQUAL);
@@ -103,7 +93,7 @@ class SmsrTwoPass final : public ShadowTechnique {
   void renderDebug(const FrameInputs& in) {
     switch (common_.debugView()) {
       case DebugView::None: return;
-      case DebugView::Discontinuity: common_.captureDebug(discMap_, in.size); return;
+      case DebugView::Discontinuity: common_.captureDebug(disc_.color(), in.size); return;
       case DebugView::Onds:
         if (!ondsProgram_)
           ondsProgram_ = Program::graphics("testbed/render/fullscreen.vert",
@@ -118,9 +108,7 @@ class SmsrTwoPass final : public ShadowTechnique {
   ShadowMapPass shadowMap_;
   EdgeSplitPass revectorize_{"techniques/revectorization/smsr_2pass_revectorize.frag"};
   Program discProgram_, ondsProgram_;
-  Texture discMap_;
-  Framebuffer discTarget_;
-  GLuint discTargetDepth_ = 0;
+  RenderTarget disc_;  // pass 1's screen-space discontinuity map
 };
 
 }  // namespace

@@ -3,7 +3,7 @@
 // smsr_2pass_search.glsl, then single-pass SMSR's conservative clipping of the ONDS
 // (smsr.glsl, EDTSM* eq. 4): Bondarev's own clipping function is not given in full
 // (GI 2016 §4.1 says so), and the conservative one is its single-pass successor. Drawn as
-// the family's screen pass (revectorization_screen.glsl): pixels without an entering
+// the family's screen pass (testbed/glsl/screen_pass.glsl): pixels without an entering
 // discontinuity in pass 1's map keep their shadow test, the others are searched.
 // EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
 // shadow mapping", Computers & Graphics 71 (2018).
@@ -12,15 +12,15 @@
 #include "techniques/revectorization/smsr_2pass_search.glsl"
 #include "techniques/revectorization/smsr.glsl"
 
-float rvScreenVisibility(ivec2 pixel, Receiver r, vec3 light) {
+float screenVisibility(ivec2 pixel, Receiver r, vec3 light) {
   RvSample s = twoPassSample(pixel, r);
   return s.edge ? smsrConservative(s) : s.s;
 }
 
-bool rvScreenClassify(ivec2 pixel, Receiver r, vec3 light, out float v) {
+bool screenClassify(ivec2 pixel, Receiver r, vec3 light, out float v) {
   vec4 disc = texelFetch(uDiscontinuityMap, pixel, 0);
   v = 1.0 - disc.b;
   return twoPassNoEdge(disc);
 }
 
-#include "techniques/revectorization/revectorization_screen.glsl"
+#include "testbed/glsl/screen_pass.glsl"

@@ -10,6 +10,7 @@
 #include "testbed/scene/mesh_topology.h"
 #include "techniques/revectorization/edge_split_pass.h"
 #include "techniques/silhouette_map/silhouette_edges.h"
+#include "testbed/gl/render_target.h"
 #include "testbed/render/receiver_inputs.h"
 #include "testbed/render/shadow_map_pass.h"
 #include "testbed/technique/registry.h"
@@ -55,7 +56,7 @@ class SilhouetteMap final : public ShadowTechnique {
     const auto bind = [&](const Program& program) {
       bindReceiverInputs(program, in);
       bindShadowMap(program, shadowMap_.depth());
-      glBindTextureUnit(3, silhouettes_.id());
+      glBindTextureUnit(3, silhouettes_.color().id());
       program.set("uSilhouetteMap", 3);
       program.set("uBias", parameters_.bias);
     };
@@ -71,14 +72,8 @@ class SilhouetteMap final : public ShadowTechnique {
       emptyVertexArray_ = VertexArray::create();
     }
     const int side = in.shadowMapSize + 1;  // one more than the depth map: see silhouette_map.glsl
-    if (!silhouettes_ || silhouettes_.width() != side) {
-      // 16-bit unorm offsets in the texel: 1/65535 of a texel, the notes ask for ≥ fp16.
-      silhouettes_ = Texture::create2D(GL_RG16, side, side);
-      silhouettes_.setFilter(GL_NEAREST, GL_NEAREST);
-      framebuffer_ = Framebuffer::create();
-      framebuffer_.attachColor(0, silhouettes_);
-      framebuffer_.finish({0});
-    }
+    // 16-bit unorm offsets in the texel: 1/65535 of a texel, the notes ask for ≥ fp16.
+    silhouettes_.ensure({.size = glm::ivec2(side), .color = GL_RG16});
     if (topologyScene_ != &in.scene || topology_.size() != in.scene.objects.size()) {
       topology_.clear();
       for (const auto& object : in.scene.objects) topology_.push_back(meshTopology(object.mesh));
@@ -95,10 +90,10 @@ class SilhouetteMap final : public ShadowTechnique {
     if (bytes > edgeBuffer_.bytes()) edgeBuffer_ = Buffer::create(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
     if (bytes > 0) glNamedBufferSubData(edgeBuffer_.id(), 0, static_cast<GLsizeiptr>(bytes), endpoints_.data());
 
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
-    glViewport(0, 0, silhouettes_.width(), silhouettes_.height());
+    glBindFramebuffer(GL_FRAMEBUFFER, silhouettes_.framebuffer().id());
+    glViewport(0, 0, silhouettes_.color().width(), silhouettes_.color().height());
     const std::array<float, 4> centre{0.5f, 0.5f, 0.0f, 0.0f};  // the default point (notes: glClear)
-    glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, centre.data());
+    glClearNamedFramebufferfv(silhouettes_.framebuffer().id(), GL_COLOR, 0, centre.data());
     if (edges == 0) return;
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
@@ -119,8 +114,7 @@ class SilhouetteMap final : public ShadowTechnique {
   revectorization::EdgeSplitPass visibility_{"techniques/silhouette_map/silhouette_map_visibility.frag"};
   Program edgeProgram_;
   VertexArray emptyVertexArray_;
-  Texture silhouettes_;
-  Framebuffer framebuffer_;
+  RenderTarget silhouettes_;  // the (N + 1)² silhouette map, RG16
   Buffer edgeBuffer_;
   std::vector<glm::vec4> endpoints_;
   std::vector<MeshTopology> topology_;

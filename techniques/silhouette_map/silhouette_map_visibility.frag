@@ -2,7 +2,7 @@
 // The final pass (Sen, Cammarano & Hanrahan 2003, §3): the four depth tests at the corners
 // of the receiver's silhouette texel; where they agree (non-silhouette pixel) they are the
 // answer, else the skewed quadrant of the five silhouette points picks the corner whose
-// test decides. Drawn edge-split (revectorization_screen.glsl): a draw of every pixel
+// test decides. Drawn edge-split (testbed/glsl/screen_pass.glsl): a draw of every pixel
 // answers where the corners agree, the silhouette pixels alone read the silhouette map.
 // Sen, Cammarano & Hanrahan, "Shadow Silhouette Maps", ACM TOG 22(3) (SIGGRAPH 2003).
 #include "testbed/glsl/receiver.glsl"
@@ -21,28 +21,25 @@ vec2 pointAt(ivec2 texel, ivec2 offset) {
   return local + vec2(offset);
 }
 
-// The four depth tests at the corners of the receiver's silhouette texel. True where they
-// decide alone: outside the light's frustum on any side (shadow, v = 0: the convention of
-// testbed/glsl/receiver.glsl) or where they agree (v = that test).
+// The four depth tests at the corners of the receiver's silhouette texel (inside the
+// light's frustum: screen_pass.glsl answers outside). True where they agree and so decide
+// alone (v = that test).
 bool cornerTests(vec3 light, out float s[4], out ivec2 texel, out vec2 w, out float v) {
-  v = 0.0;
   w = light.xy * vec2(uShadowMapSize) + 0.5;
   texel = ivec2(floor(w));
-  for (int c = 0; c < 4; ++c) s[c] = 0.0;
-  if (!insideLightFrustum(light)) return true;
   for (int c = 0; c < 4; ++c) s[c] = shadowTestTexel(texel - 1 + ivec2(c & 1, c >> 1), light.z, uBias);
   v = s[0];
   return s[0] == s[1] && s[0] == s[2] && s[0] == s[3];
 }
 
-bool rvScreenClassify(ivec2 pixel, Receiver r, vec3 light, out float v) {
+bool screenClassify(ivec2 pixel, Receiver r, vec3 light, out float v) {
   float s[4];
   ivec2 texel;
   vec2 w;
   return cornerTests(light, s, texel, w, v);
 }
 
-float rvScreenVisibility(ivec2 pixel, Receiver r, vec3 light) {
+float screenVisibility(ivec2 pixel, Receiver r, vec3 light) {
   float s[4], v;
   ivec2 texel;
   vec2 w;
@@ -52,4 +49,4 @@ float rvScreenVisibility(ivec2 pixel, Receiver r, vec3 light) {
   return s[corner];
 }
 
-#include "techniques/revectorization/revectorization_screen.glsl"
+#include "testbed/glsl/screen_pass.glsl"

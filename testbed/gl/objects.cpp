@@ -1,6 +1,8 @@
 #include "testbed/gl/objects.h"
 
+#include <algorithm>
 #include <atomic>
+#include <stdexcept>
 #include <string>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -155,7 +157,9 @@ void Framebuffer::attachColor(int index, const Texture& texture, int level) cons
 }
 
 void Framebuffer::attachDepth(const Texture& texture, int level) const {
-  glNamedFramebufferTexture(id(), GL_DEPTH_ATTACHMENT, texture.id(), level);
+  const GLenum format = texture.internalFormat();
+  const bool stencil = format == GL_DEPTH24_STENCIL8 || format == GL_DEPTH32F_STENCIL8;
+  glNamedFramebufferTexture(id(), stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, texture.id(), level);
 }
 
 void Framebuffer::finish(std::initializer_list<int> colorIndices) const {
@@ -185,13 +189,15 @@ VertexArray VertexArray::create() {
 
 namespace {
 
-GLuint compileStage(GLenum stage, std::string_view key, std::string_view defines) {
+// Compiles one stage and appends its full source to `sources` (for declaredUniforms).
+GLuint compileStage(GLenum stage, std::string_view key, std::string_view defines, std::string& sources) {
   std::string source = expandShaderSource(key);
   // The defines go right after the #version line, which must stay first.
   const auto versionEnd = source.find('\n');
   if (source.rfind("#version", 0) != 0 || versionEnd == std::string::npos)
     throw GlError(std::string(key) + ": shader must start with #version");
   source.insert(versionEnd + 1, std::string(defines));
+  sources += source;
   const char* text = source.c_str();
   GLuint shader = glCreateShader(stage);
   glShaderSource(shader, 1, &text, nullptr);
@@ -229,42 +235,55 @@ GLuint link(std::initializer_list<GLuint> shaders, std::string_view what) {
 
 }  // namespace
 
-Program::Program(GLuint id) : GlObject(id, 0, [](GLuint name) { glDeleteProgram(name); }) {}
+Program::Program(GLuint id, std::string name, std::vector<std::string> declared)
+    : GlObject(id, 0, [](GLuint program) { glDeleteProgram(program); }),
+      name_(std::move(name)),
+      declared_(std::move(declared)) {}
 
 Program Program::graphics(std::string_view vertexKey, std::string_view fragmentKey,
                           std::string_view defines) {
-  GLuint vs = compileStage(GL_VERTEX_SHADER, vertexKey, defines);
+  std::string sources;
+  GLuint vs = compileStage(GL_VERTEX_SHADER, vertexKey, defines, sources);
   GLuint fs = 0;
   try {
-    fs = compileStage(GL_FRAGMENT_SHADER, fragmentKey, defines);
+    fs = compileStage(GL_FRAGMENT_SHADER, fragmentKey, defines, sources);
   } catch (...) {
     glDeleteShader(vs);
     throw;
   }
-  return Program(link({vs, fs}, fragmentKey));
+  return Program(link({vs, fs}, fragmentKey), std::string(fragmentKey), declaredUniforms(sources));
 }
 
 Program Program::compute(std::string_view computeKey, std::string_view defines) {
-  return Program(link({compileStage(GL_COMPUTE_SHADER, computeKey, defines)}, computeKey));
+  std::string sources;
+  const GLuint cs = compileStage(GL_COMPUTE_SHADER, computeKey, defines, sources);
+  return Program(link({cs}, computeKey), std::string(computeKey), declaredUniforms(sources));
 }
 
 GLint Program::location(const char* name) const { return glGetUniformLocation(id(), name); }
-void Program::set(const char* name, int v) const { glProgramUniform1i(id(), location(name), v); }
-void Program::set(const char* name, float v) const { glProgramUniform1f(id(), location(name), v); }
+
+GLint Program::checkedLocation(const char* name) const {
+  const GLint at = location(name);
+  if (at < 0 && !std::binary_search(declared_.begin(), declared_.end(), std::string_view(name)))
+    throw std::logic_error(name_ + ": no uniform named " + name + " in its sources (misspelt?)");
+  return at;
+}
+void Program::set(const char* name, int v) const { glProgramUniform1i(id(), checkedLocation(name), v); }
+void Program::set(const char* name, float v) const { glProgramUniform1f(id(), checkedLocation(name), v); }
 void Program::set(const char* name, const glm::vec2& v) const {
-  glProgramUniform2fv(id(), location(name), 1, glm::value_ptr(v));
+  glProgramUniform2fv(id(), checkedLocation(name), 1, glm::value_ptr(v));
 }
 void Program::set(const char* name, const glm::vec3& v) const {
-  glProgramUniform3fv(id(), location(name), 1, glm::value_ptr(v));
+  glProgramUniform3fv(id(), checkedLocation(name), 1, glm::value_ptr(v));
 }
 void Program::set(const char* name, const glm::vec4& v) const {
-  glProgramUniform4fv(id(), location(name), 1, glm::value_ptr(v));
+  glProgramUniform4fv(id(), checkedLocation(name), 1, glm::value_ptr(v));
 }
 void Program::set(const char* name, const glm::ivec2& v) const {
-  glProgramUniform2iv(id(), location(name), 1, glm::value_ptr(v));
+  glProgramUniform2iv(id(), checkedLocation(name), 1, glm::value_ptr(v));
 }
 void Program::set(const char* name, const glm::mat4& v) const {
-  glProgramUniformMatrix4fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(v));
+  glProgramUniformMatrix4fv(id(), checkedLocation(name), 1, GL_FALSE, glm::value_ptr(v));
 }
 
 void checkGlError(std::string_view what) {

@@ -108,6 +108,7 @@ class Framebuffer : public GlObject {
   Framebuffer() = default;
   static Framebuffer create();
   void attachColor(int index, const Texture& texture, int level = 0) const;
+  // At the depth-stencil attachment for a format with stencil.
   void attachDepth(const Texture& texture, int level = 0) const;
   // Sets the draw buffers to the attached color indices and checks completeness.
   void finish(std::initializer_list<int> colorIndices) const;
@@ -126,6 +127,9 @@ class VertexArray : public GlObject {
 };
 
 // A linked program built from embedded shader sources (keys of the shader library).
+// set() throws std::logic_error naming the program and the uniform when no source of the
+// program declares that uniform (a misspelt name would otherwise be silently ignored); a
+// uniform that is declared but compiled away (unused in this variant) is ignored.
 class Program : public GlObject {
  public:
   Program() = default;
@@ -134,6 +138,7 @@ class Program : public GlObject {
                           std::string_view defines = {});
   static Program compute(std::string_view computeKey, std::string_view defines = {});
 
+  // -1 for a uniform the program does not have (or the compiler dropped).
   GLint location(const char* name) const;
   void set(const char* name, int value) const;
   void set(const char* name, float value) const;
@@ -145,7 +150,12 @@ class Program : public GlObject {
   void use() const { glUseProgram(id()); }
 
  private:
-  explicit Program(GLuint id);
+  Program(GLuint id, std::string name, std::vector<std::string> declared);
+  // location(), or the logic_error above.
+  GLint checkedLocation(const char* name) const;
+
+  std::string name_;                   // the fragment or compute shader's key
+  std::vector<std::string> declared_;  // uniform names of its sources, sorted
 };
 
 // Throws GlError naming `what` if the GL error flag is set.

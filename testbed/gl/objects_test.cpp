@@ -2,6 +2,8 @@
 // the current ledger, shaders compile from the embedded library with includes expanded.
 #include "testbed/gl/objects.h"
 
+#include <stdexcept>
+
 #include <gtest/gtest.h>
 
 #include "testbed/core/error.h"
@@ -69,6 +71,44 @@ TEST_F(GlObjects, ProgramsBuildFromTheEmbeddedLibrary) {
   EXPECT_GE(program.location("uBias"), 0);
   EXPECT_GE(program.location("uShadowMap"), 0);  // declared in an included file
   EXPECT_THROW(Program::graphics("testbed/render/fullscreen.vert", "no/such/shader.frag"), GlError);
+}
+
+// A misspelt uniform must not pass silently (for pcf, an unset kernel divides by 0); one
+// that a variant's compiler dropped is declared in the source and is ignored.
+TEST_F(GlObjects, SettingAnUndeclaredUniformThrowsNamingProgramAndUniform) {
+  static const ShaderRegistration shader("test/uniforms.frag",
+                                         "#version 450 core\n"
+                                         "uniform float uUsed;\n"
+                                         "uniform float uDropped;  // never read: compiled away\n"
+                                         "out float outValue;\n"
+                                         "void main() { outValue = uUsed; }\n");
+  const Program program = Program::graphics("testbed/render/fullscreen.vert", "test/uniforms.frag");
+  EXPECT_NO_THROW(program.set("uUsed", 1.0f));
+  EXPECT_EQ(program.location("uDropped"), -1);
+  EXPECT_NO_THROW(program.set("uDropped", 1.0f));
+  try {
+    program.set("uUsedd", 1.0f);
+    ADD_FAILURE() << "a misspelt uniform was accepted";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("test/uniforms.frag"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("uUsedd"), std::string::npos) << e.what();
+  }
+  // Every overload checks; the real pcf program too.
+  EXPECT_THROW(program.set("uNone", glm::mat4(1.0f)), std::logic_error);
+  const Program pcf = Program::graphics("testbed/render/fullscreen.vert", "techniques/pcf/pcf_visibility.frag");
+  EXPECT_NO_THROW(pcf.set("uKernel", 3));
+  EXPECT_THROW(pcf.set("uKernal", 3), std::logic_error);
+}
+
+TEST(ShaderLibrary, DeclaredUniformsAreReadFromTheSourceNotItsComments) {
+  const std::string source =
+      "uniform vec3 uA, uB[2];\n"
+      "layout(location = 3) uniform int uC = 3;\n"
+      "// uniform float uInComment;\n"
+      "/* uniform float uInBlock; */\n"
+      "#ifdef X\nuniform sampler2D uD;\n#endif\n"
+      "float notAuniform;\n";
+  EXPECT_EQ(declaredUniforms(source), (std::vector<std::string>{"uA", "uB", "uC", "uD"}));
 }
 
 TEST(ShaderLibrary, ExpandsIncludesOnceEach) {

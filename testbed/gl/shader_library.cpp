@@ -1,5 +1,7 @@
 #include "testbed/gl/shader_library.h"
 
+#include <algorithm>
+#include <cctype>
 #include <map>
 #include <set>
 #include <sstream>
@@ -72,6 +74,48 @@ std::string expandShaderSource(std::string_view key) {
   std::string out;
   expandInto(key, included, stack, out);
   return out;
+}
+
+std::vector<std::string> declaredUniforms(std::string_view source) {
+  // The source without comments, each replaced by a space.
+  std::string code;
+  for (std::size_t i = 0; i < source.size();) {
+    if (source.compare(i, 2, "//") == 0) {
+      i = source.find('\n', i);
+      if (i == std::string_view::npos) break;
+    } else if (source.compare(i, 2, "/*") == 0) {
+      const auto end = source.find("*/", i + 2);
+      i = end == std::string_view::npos ? source.size() : end + 2;
+      code += ' ';
+    } else {
+      code += source[i++];
+    }
+  }
+  const auto identifierChar = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  std::vector<std::string> names;
+  for (std::size_t at = code.find("uniform"); at != std::string::npos; at = code.find("uniform", at + 7)) {
+    if ((at > 0 && identifierChar(code[at - 1])) || (at + 7 < code.size() && identifierChar(code[at + 7]))) continue;
+    const auto end = code.find_first_of(";{", at);
+    if (end == std::string::npos || code[end] == '{') continue;
+    // "uniform [qualifiers] type a[, b[4], c = 1.0]": each declarator's name is the last
+    // identifier before its '[' or '='.
+    std::string_view declaration(code.data() + at + 7, end - at - 7);
+    for (std::size_t begin = 0; begin <= declaration.size();) {
+      auto comma = declaration.find(',', begin);
+      if (comma == std::string_view::npos) comma = declaration.size();
+      std::string_view part = declaration.substr(begin, comma - begin);
+      part = part.substr(0, part.find_first_of("[="));
+      auto last = part.size();
+      while (last > 0 && !identifierChar(part[last - 1])) --last;
+      auto first = last;
+      while (first > 0 && identifierChar(part[first - 1])) --first;
+      if (first < last) names.emplace_back(part.substr(first, last - first));
+      begin = comma + 1;
+    }
+  }
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  return names;
 }
 
 std::vector<std::string> embeddedShaderKeys() {

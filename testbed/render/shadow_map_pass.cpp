@@ -22,20 +22,15 @@ void reflectShadowTestBias(ParameterBinder& b, float& bias) {
 
 void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
   const GLenum format = depthInternalFormat(in.depthFormat);
-  if (!depth_ || depth_.width() != in.shadowMapSize || depth_.internalFormat() != format) {
-    depth_ = Texture::create2D(format, in.shadowMapSize, in.shadowMapSize);
-    depth_.setFilter(GL_NEAREST, GL_NEAREST);
-    depth_.setWrap(GL_CLAMP_TO_BORDER, glm::vec4(0.0f));
-    framebuffer_ = Framebuffer::create();
-    framebuffer_.attachDepth(depth_);
-    framebuffer_.finish({});
-  }
+  // Border depth 0: every lookup outside the map reads shadow (testbed/glsl/receiver.glsl).
+  if (target_.ensure({.size = glm::ivec2(in.shadowMapSize), .depth = format}))
+    target_.depth().setWrap(GL_CLAMP_TO_BORDER, glm::vec4(0.0f));
   if (!program_) program_ = Program::graphics("testbed/render/shadow_map.vert", "testbed/render/shadow_map.frag");
 
   auto scope = timer.scope("shadow-map");
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+  glBindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer().id());
   glViewport(0, 0, in.shadowMapSize, in.shadowMapSize);
-  glClearNamedFramebufferfi(framebuffer_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  glClearNamedFramebufferfi(target_.framebuffer().id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);

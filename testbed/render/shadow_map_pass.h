@@ -8,6 +8,7 @@
 
 #include "testbed/gl/objects.h"
 #include "testbed/gl/pass_timer.h"
+#include "testbed/gl/render_target.h"
 #include "testbed/gl/depth_format.h"
 #include "testbed/render/gpu_scene.h"
 #include "testbed/scene/view.h"
@@ -30,12 +31,11 @@ class ShadowMapPass {
   // Renders the light's depth into the map (timed as "shadow-map"); (re)allocates the
   // texture when size or format change.
   void render(const FrameInputs& in, PassTimer& timer);
-  const Texture& depth() const { return depth_; }
+  const Texture& depth() const { return target_.depth(); }
 
  private:
   Parameters parameters_{};
-  Texture depth_;
-  Framebuffer framebuffer_;
+  RenderTarget target_;  // the depth map
   Program program_;
 };
 

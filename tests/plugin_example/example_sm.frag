@@ -5,15 +5,7 @@
 #include "testbed/glsl/shadow_test.glsl"
 
 uniform float uBias;
-layout(location = 0) out float outVisibility;
 
-void main() {
-  Receiver r;
-  if (!loadReceiver(ivec2(gl_FragCoord.xy), r)) discard;
-  if (facesAwayFromLight(r)) {
-    outVisibility = 0.0;
-    return;
-  }
-  vec3 light = lightSpace(r.position);
-  outVisibility = shadowTest(light.xy, light.z, uBias);
-}
+float screenVisibility(ivec2 pixel, Receiver r, vec3 light) { return shadowTest(light.xy, light.z, uBias); }
+
+#include "testbed/glsl/screen_pass.glsl"
