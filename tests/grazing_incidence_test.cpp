@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "testbed/metrics/metrics.h"
-#include "testbed/scene/scene_parser.h"
+#include "testbed/scene/scene.h"
 #include "tests/gl_fixture.h"
 
 namespace testbed {
@@ -92,8 +92,10 @@ TEST(FacingRule, AnAlmostVerticalSunRendersAsAVerticalOne) {
     SCOPED_TRACE(id);
     const double exact = computeErrorMetrics(test::runTechnique(a, id).visibility, truthA).mismatchPct;
     const double tilted = computeErrorMetrics(test::runTechnique(b, id).visibility, truthB).mismatchPct;
-    // The two lights differ by 0.006°: a few boundary pixels may move, nothing more.
-    EXPECT_LE(tilted, exact + 0.1);
+    // The two lights differ by 0.006°, yet their maps' texel grids do not coincide (the
+    // light's up vector is picked anew for an exactly vertical one), so boundary pixels
+    // move: up to 0.3 points for msm. The defect was 16 points (silhouette-map).
+    EXPECT_LE(tilted, exact + 0.5);
   }
 }
 
