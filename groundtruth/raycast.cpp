@@ -231,8 +231,7 @@ class RayCast final : public ShadowTechnique {
         const glm::vec3 p(gp[0], gp[1], gp[2]);
         const glm::vec3 n(normals_[3 * i], normals_[3 * i + 1], normals_[3 * i + 2]);
         // Same rules, same order of float operations as glsl/receiver.glsl.
-        const glm::vec3 towards = light.orthographic ? -light.direction : glm::normalize(light.position - p);
-        if (glm::dot(n, towards) <= 0.0f) continue;  // faces away: shadowed
+        if (!facesLight(light, p, n)) continue;  // faces away (or nearly edge-on): shadowed
         if (!insideLightFrustum(light, p)) continue;  // outside the frustum: shadowed
 
         RTCRay ray;

@@ -3,14 +3,14 @@
 // up to 1e5, directional lights 2°–10° above the floor with extents smaller than the
 // receivers — at 16, 24 and 32f depth, with a CGAL mesh (the dragon) as well as boxes,
 // 640×360 screen and 512² map, all with the default (fitted) light set-up:
-// - sm: leak_pct ≤ 0.05 and overestimation_pct ≤ 0.05 everywhere, boundary_px.mean ≤ 1 px
+// - sm: leak_pct ≤ 0.05 and overestimation_pct ≤ 0.05 everywhere (one exception at 32f,
+//   see the cases), boundary_px.mean ≤ 1 px
 //   where the light is at least 10° above the receiver (below, projection aliasing is the
 //   technique's business: printed, not asserted);
 // - every registered technique (16-bit, where the polygon offset is coarsest): leak_pct
 //   ≤ sm's + 0.02; but esm and vsm, whose light bleeding where a receiver lies close
 //   behind its occluder (the dragon's own folds: 0.40 % and 0.08 % here, 0 on the boxes)
 //   is their filter's, not the set-up's: printed, and held to ≤ sm's + 0.5.
-// Exception: sm's overestimation on the dragon under a 10° sun at 24/32f (see the grid).
 // Each case loads its scene once and shares the G-buffer's ground truth across formats.
 #include <gtest/gtest.h>
 
@@ -33,7 +33,7 @@ struct HardCase {
   json light;
   bool mesh;               // the dragon on the floor (else boxes)
   bool steep;              // light ≥ 10° above the receivers: boundary_px.mean asserted
-  double overestimation = 0.05;  // sm's bound (see the dragon under a 10° sun)
+  double overestimation32f = 0.05;  // sm's bound at 32f (see the dragon under a 10° sun)
   bool everyTechnique = true;    // false where the fitted set-up equals another case's
 };
 
@@ -101,7 +101,7 @@ TEST_P(LightSetupHardCases, ShadowMapSetUpDoesNotLeak) {
     print(c.name, formatName, "sm", sm);
     ASSERT_GT(sm.gtBoundaryPixels, 500);  // there is a shadow to get right
     EXPECT_LE(sm.leakPct, 0.05);
-    EXPECT_LE(sm.overestimationPct, c.overestimation);
+    EXPECT_LE(sm.overestimationPct, format == DepthFormat::D32F ? c.overestimation32f : 0.05);
     if (c.steep) EXPECT_LE(sm.boundaryMean, 1.0);
     if (format != DepthFormat::D16 || !c.everyTechnique) continue;
     for (const auto& technique : registeredTechniques()) {
@@ -123,10 +123,11 @@ INSTANTIATE_TEST_SUITE_P(
                       HardCase{"spot-near10-dragon", spotLight(10, 1e5), true, true, 0.05, false},
                       HardCase{"sun-10deg-small-extent", sun(10, 30), false, true},
                       HardCase{"sun-2deg-small-extent", sun(2, 30), false, false},
-                      // The one exception: at 24 and 32f bits the offset's 20 steps are ~1e-4
-                      // world units here, and the slope term alone leaves acne where the
-                      // dragon's surface turns from the sun (0.058 %; 0.048 % at 16 bits).
-                      HardCase{"sun-10deg-fitted-dragon", sun(10, 0), true, true, 0.07}),
+                      // The one exception. Before offset_units counted 16-bit steps at every
+                      // format, 24 and 32f left the dragon's terminator self-shadowed here
+                      // (0.058 %); now 24 bits gives 16's 0.048 %, and 32f, the same offset
+                      // but no rounding of the stored depth, 0.053 %.
+                      HardCase{"sun-10deg-fitted-dragon", sun(10, 0), true, true, 0.055}),
     [](const auto& info) { return test::caseName(info.param.name); });
 
 }  // namespace

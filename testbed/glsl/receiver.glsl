@@ -7,6 +7,7 @@ uniform mat4 uLightViewProjection;
 uniform vec3 uLightPosition;
 uniform vec3 uLightDirection;  // the direction light travels
 uniform int uLightOrthographic;
+uniform float uFacingLimit;    // sin of the least incidence that counts as lit (scene/view.h)
 
 struct Receiver {
   vec3 position;
@@ -25,7 +26,9 @@ vec3 towardsLight(vec3 position) {
   return uLightOrthographic == 1 ? -uLightDirection : normalize(uLightPosition - position);
 }
 
-bool facesAwayFromLight(Receiver r) { return dot(r.normal, towardsLight(r.position)) <= 0.0; }
+// The facing rule (kFacingLimit in scene/view.h): facing away from the light, or meeting it
+// at less than a degree, is shadow.
+bool facesAwayFromLight(Receiver r) { return dot(r.normal, towardsLight(r.position)) <= uFacingLimit; }
 
 // The one convention for receivers outside the light's frustum, on any of its six sides
 // (beside the map, in front of the near plane, beyond the far plane) or behind a spot

@@ -18,6 +18,7 @@ void bindReceiverInputs(const Program& program, const FrameInputs& in, const glm
   program.set("uLightPosition", lightPosition);
   program.set("uLightDirection", in.light.direction);
   program.set("uLightOrthographic", in.light.orthographic ? 1 : 0);
+  program.set("uFacingLimit", kFacingLimit);
 }
 
 }  // namespace testbed

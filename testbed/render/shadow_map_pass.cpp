@@ -13,7 +13,7 @@ void ShadowMapPass::Parameters::reflect(ParameterBinder& b) {
   b.real("offset_factor", offsetFactor, 4.0, 0.0, 100.0,
          "glPolygonOffset factor while rendering the shadow map (slope term)");
   b.real("offset_units", offsetUnits, 20.0, 0.0, 100000.0,
-         "glPolygonOffset units while rendering the shadow map (constant term)");
+         "polygon offset's constant term, in 16-bit depth steps whatever the depth format");
 }
 
 void reflectShadowTestBias(ParameterBinder& b, float& bias) {
@@ -25,7 +25,15 @@ void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
   // Border depth 0: every lookup outside the map reads shadow (testbed/glsl/receiver.glsl).
   if (target_.ensure({.size = glm::ivec2(in.shadowMapSize), .depth = format}))
     target_.depth().setWrap(GL_CLAMP_TO_BORDER, glm::vec4(0.0f));
-  if (!program_) program_ = Program::graphics("testbed/render/shadow_map.vert", "testbed/render/shadow_map.frag");
+  // offset_units counts 16-bit depth steps at every depth format, so the constant term
+  // keeps the world size it has at the papers' 16 bits: ×256 at 24 bits (r = 2^-24); a
+  // 32f buffer's r depends on each primitive's depth, so there the shader adds the term.
+  const bool floatDepth = in.depthFormat == DepthFormat::D32F;
+  Program& program = floatDepth ? floatProgram_ : program_;
+  if (!program)
+    program = Program::graphics("testbed/render/shadow_map.vert", "testbed/render/shadow_map.frag",
+                                floatDepth ? "#define CONSTANT_OFFSET_IN_SHADER\n" : "");
+  const float units = parameters_.offsetUnits;
 
   auto scope = timer.scope("shadow-map");
   glBindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer().id());
@@ -36,16 +44,17 @@ void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
   glDepthMask(GL_TRUE);
   glDisable(GL_CULL_FACE);  // open meshes cast shadows from both sides
   glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(parameters_.offsetFactor, parameters_.offsetUnits);
-  program_.use();
-  program_.set("uLightViewProjection", in.light.viewProjection());
+  glPolygonOffset(parameters_.offsetFactor, floatDepth ? 0.0f : in.depthFormat == DepthFormat::D24 ? units * 256 : units);
+  program.use();
+  program.set("uLightViewProjection", in.light.viewProjection());
+  if (floatDepth) program.set("uConstantOffset", units * kDepthStep16);
   in.geometry.draw();
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
 nlohmann::json lightSetupRecord(const LightTransforms& light, int shadowMapSize, DepthFormat format,
                                 const nlohmann::json& params) {
-  const int bits = format == DepthFormat::D16 ? 16 : 24;
+  const int bits = format == DepthFormat::D16 ? 16 : 24;  // 32f: its r in [0.5, 1), 2^-24
   auto texel = [&](double depth) {
     const double half = light.orthographic ? light.extent : depth * std::tan(glm::radians(double(light.fovDegrees)) / 2);
     return 2 * half / shadowMapSize;
@@ -67,7 +76,7 @@ nlohmann::json lightSetupRecord(const LightTransforms& light, int shadowMapSize,
   if (params.contains("offset_units") && params.contains("offset_factor")) {
     const double units = params["offset_units"].get<double>(), factor = params["offset_factor"].get<double>();
     record["offset_world"] =
-        atPlanes([&](double d) { return units * depthStepWorld(light, bits, d) + factor * texel(d); });
+        atPlanes([&](double d) { return units * depthStepWorld(light, 16, d) + factor * texel(d); });
   }
   return record;
 }

@@ -36,8 +36,11 @@ class ShadowMapPass {
  private:
   Parameters parameters_{};
   RenderTarget target_;  // the depth map
-  Program program_;
+  Program program_, floatProgram_;  // floatProgram_: 32f depth, the constant offset in the shader
 };
+
+// One step of a 16-bit depth buffer in window depth: the unit of `offset_units`.
+inline constexpr float kDepthStep16 = 1.0f / 65536.0f;
 
 // The record's "light" block: the transforms used (eye, near, far, fov or extent, fitted)
 // and what they amount to in world units along the light's rays at the near and far

@@ -29,8 +29,8 @@ float fittedDirectionalExtent(const Scene& scene, const LightDesc& light);
 LightTransforms fittedLightTransforms(const Scene& scene);
 inline constexpr double kDepthMargin = 0.005;
 
-// World size, along the light's rays, of one depth-buffer step (the polygon offset's
-// "units" of glPolygonOffset: r = 2^-16, 2^-24, and 2^-24 for 32f depths in [0.5, 1)) at
+// World size, along the light's rays, of one depth-buffer step (r = 2^-16, 2^-24, and
+// 2^-24 for 32f depths in [0.5, 1); `offset_units` counts 16-bit steps at every format) at
 // view depth d from the light: perspective r·(f−n)·d²/(f·n), orthographic r·(f−n).
 double depthStepWorld(const LightTransforms& light, int depthBits, double viewDepth);
 

@@ -56,4 +56,10 @@ bool insideLightFrustum(const LightTransforms& light, const glm::vec3& world) {
   return p.x >= 0.0f && p.y >= 0.0f && p.z >= 0.0f && p.x <= 1.0f && p.y <= 1.0f && p.z <= 1.0f;
 }
 
+bool facesLight(const LightTransforms& light, const glm::vec3& world, const glm::vec3& normal) {
+  // Same float operations, same order, as towardsLight()/facesAwayFromLight() in GLSL.
+  const glm::vec3 towards = light.orthographic ? -light.direction : glm::normalize(light.position - world);
+  return glm::dot(normal, towards) > kFacingLimit;
+}
+
 }  // namespace testbed
