@@ -22,6 +22,7 @@ using nlohmann::json;
 constexpr double kPi = 3.14159265358979;
 
 TEST(FacingRule, OneDegreeOfIncidenceIsTheLimit) {
+  EXPECT_NEAR(kFacingLimit, std::sin(kPi / 180), 1e-9);
   LightTransforms sun;
   sun.orthographic = true;
   sun.direction = {0, -1, 0};  // straight down

@@ -41,12 +41,11 @@ bool insideLightFrustum(const LightTransforms& light, const glm::vec3& world);
 
 // The facing rule, shared by every technique and every ground truth: a receiver is in
 // shadow when its (geometric) normal faces away from the light or meets the light at less
-// than kMinLightIncidenceDegrees, i.e. dot(normal, towards light) ≤ kFacingLimit. Edge-on
+// than 1°, i.e. dot(normal, towards light) ≤ kFacingLimit = sin 1°. Edge-on
 // and nearly edge-on receivers alike: a surface within a degree of the light's rays has a
 // footprint in the shadow map of a fraction of a texel, so every projective technique's
 // answer there is projection aliasing (Lambert shading makes it at most 1.7 % of full
 // light either way), and counting it would measure that instead of the shadow's edges.
-inline constexpr float kMinLightIncidenceDegrees = 1.0f;
 inline constexpr float kFacingLimit = 0.0174524064f;  // sin(1°)
 // True when a receiver at `world` with unit geometric normal `normal` is lit by the facing
 // rule (the CPU twin of facesAwayFromLight() in glsl/receiver.glsl).
