@@ -136,17 +136,10 @@ class ShadowVolumes final : public ShadowTechnique {
     const std::size_t bytes = vertices_.size() * sizeof(VolumeVertex);
     if (bytes > buffer_.bytes()) {
       buffer_ = Buffer::create(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
-      const GLuint vao = vertexArray_.id();
-      glVertexArrayVertexBuffer(vao, 0, buffer_.id(), 0, sizeof(VolumeVertex));
-      glEnableVertexArrayAttrib(vao, 0);
-      glVertexArrayAttribFormat(vao, 0, 4, GL_FLOAT, GL_FALSE, offsetof(VolumeVertex, position));
-      glVertexArrayAttribBinding(vao, 0, 0);
-      glEnableVertexArrayAttrib(vao, 1);
-      glVertexArrayAttribFormat(vao, 1, 4, GL_FLOAT, GL_FALSE, offsetof(VolumeVertex, plane));
-      glVertexArrayAttribBinding(vao, 1, 0);
-      glEnableVertexArrayAttrib(vao, 2);
-      glVertexArrayAttribFormat(vao, 2, 1, GL_FLOAT, GL_FALSE, offsetof(VolumeVertex, lightCap));
-      glVertexArrayAttribBinding(vao, 2, 0);
+      vertexArray_.setVertexBuffer(buffer_, sizeof(VolumeVertex));
+      vertexArray_.setFloatAttribute(0, 4, offsetof(VolumeVertex, position));
+      vertexArray_.setFloatAttribute(1, 4, offsetof(VolumeVertex, plane));
+      vertexArray_.setFloatAttribute(2, 1, offsetof(VolumeVertex, lightCap));
     }
     if (bytes > 0) glNamedBufferSubData(buffer_.id(), 0, GLsizeiptr(bytes), vertices_.data());
     return GLsizei(vertices_.size());

@@ -7,7 +7,7 @@
 
 namespace testbed::distance_transform {
 
-void EdtShadowMapping::Parameters::reflect(ParameterBinder& b) {
+void EdtsmParameters::reflect(ParameterBinder& b) {
   // World-unit defaults suit the bundled scenes (objects 10–60 units across).
   b.real("penumbra", penumbra, 1.0, 0.0, 1e6, "penumbra size P in world units (eq. 8)");
   b.real("filter_width", filterWidth, 0.5, 0.0, 1e6,
@@ -18,8 +18,7 @@ void EdtShadowMapping::Parameters::reflect(ParameterBinder& b) {
   rbsm.reflect(b);
 }
 
-void EdtShadowMapping::configure(const ParameterSet& values) {
-  bindParameters(values, parameters_);
+void EdtShadowMapping::configured() {
   shadowMap_.configure(parameters_.rbsm.shadowMap);
   rbsm_.configure(parameters_.rbsm);
 }
@@ -101,39 +100,22 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
 
 namespace {
 
-TechniqueInfo describeEdtsm(const char* id, const char* citation, const char* summary) {
-  return {.id = id,
-          .output = OutputKind::Filtered,
-          .citation = citation,
-          .summary = summary,
-          .parameters = declaredParameters<EdtShadowMapping::Parameters>()};
-}
-
 class Edtsm final : public EdtShadowMapping {
  public:
   Edtsm() : EdtShadowMapping(false) {}
-  static TechniqueInfo describe() {
-    return describeEdtsm("edtsm", "Macedo, Apolinário, Euclidean distance transform shadow mapping, GI 2017",
-                         "fixed-size penumbra from the exact EDT over conservative RBSM hard shadows");
-  }
 };
 
 class EdtsmStar final : public EdtShadowMapping {
  public:
   EdtsmStar() : EdtShadowMapping(true) {}
-  static TechniqueInfo describe() {
-    return describeEdtsm("edtsm-star",
-                         "Macedo, Apolinário, Improved anti-aliasing for Euclidean distance transform shadow mapping",
-                         "EDTSM over RBSM with the improved visibility function (less overestimation)");
-  }
 };
+
+TESTBED_REGISTER_TECHNIQUE(Edtsm, .id = "edtsm", .output = OutputKind::Filtered,
+                           .citation = "Macedo, Apolinário, Euclidean distance transform shadow mapping, GI 2017",
+                           .summary = "fixed-size penumbra from the exact EDT over conservative RBSM hard shadows");
+TESTBED_REGISTER_TECHNIQUE(EdtsmStar, .id = "edtsm-star", .output = OutputKind::Filtered,
+                           .citation = "Macedo, Apolinário, Improved anti-aliasing for Euclidean distance transform shadow mapping",
+                           .summary = "EDTSM over RBSM with the improved visibility function (less overestimation)");
 
 }  // namespace
 }  // namespace testbed::distance_transform
-
-namespace testbed {
-using distance_transform::Edtsm;
-using distance_transform::EdtsmStar;
-TESTBED_REGISTER_TECHNIQUE(Edtsm);
-TESTBED_REGISTER_TECHNIQUE(EdtsmStar);
-}  // namespace testbed

@@ -17,20 +17,20 @@
 #include "testbed/render/screen_pass.h"
 #include "testbed/render/shadow_map_pass.h"
 #include "testbed/technique/technique.h"
+#include "testbed/technique/with_parameters.h"
 
 namespace testbed::distance_transform {
 
-class EdtShadowMapping : public ShadowTechnique {
- public:
-  // penumbra, filter_width, depth_threshold, max_filter_radius, then RBSM's parameters.
-  struct Parameters {
-    float penumbra, filterWidth, depthThreshold;
-    int maxFilterRadius;
-    revectorization::CommonParameters rbsm;
-    void reflect(ParameterBinder& b);
-  };
+// penumbra, filter_width, depth_threshold, max_filter_radius, then RBSM's parameters.
+struct EdtsmParameters {
+  float penumbra, filterWidth, depthThreshold;
+  int maxFilterRadius;
+  revectorization::CommonParameters rbsm;
+  void reflect(ParameterBinder& b);
+};
 
-  void configure(const ParameterSet& parameters) override;
+class EdtShadowMapping : public WithParameters<EdtsmParameters> {
+ public:
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override;
   std::vector<std::pair<std::string, ImageF>> debugImages() const override { return rbsm_.debugImages(); }
 
@@ -38,12 +38,12 @@ class EdtShadowMapping : public ShadowTechnique {
   explicit EdtShadowMapping(bool improved) : improved_(improved) {}
 
  private:
+  void configured() override;
   void allocate(glm::ivec2 size);
   // Receivers, camera depth and the edge-awareness threshold of edtsm_screen.glsl.
   void bindScreenInputs(const Program& program, const FrameInputs& in) const;
 
   bool improved_;
-  Parameters parameters_{};
   revectorization::Common rbsm_;
   ShadowMapPass shadowMap_;
   ScreenPass screen_;

@@ -8,49 +8,34 @@
 namespace testbed {
 namespace {
 
-class PercentageCloserFiltering final : public ShadowMapScreenTechnique {
+struct PcfParameters {
+  int kernel;
+  bool bilinear;
+  float bias;
+  ShadowMapPass::Parameters shadowMap;
+  void reflect(ParameterBinder& b) {
+    // Odd so the block is centred on the receiver's texel.
+    b.integer("kernel", kernel, 3, 1, 31, "filter width k in texels (k×k taps, odd)").oddOnly();
+    b.boolean("bilinear", bilinear, false, "weight each tap bilinearly over its 4 nearest texels ((k+1)² tests)");
+    reflectShadowTestBias(b, bias);
+    shadowMap.reflect(b);
+  }
+};
+
+class PercentageCloserFiltering final : public ShadowMapScreenTechnique<PcfParameters> {
  public:
-  struct Parameters {
-    int kernel;
-    bool bilinear;
-    float bias;
-    ShadowMapPass::Parameters shadowMap;
-    void reflect(ParameterBinder& b) {
-      // Odd so the block is centred on the receiver's texel.
-      b.integer("kernel", kernel, 3, 1, 31, "filter width k in texels (k×k taps, odd)").oddOnly();
-      b.boolean("bilinear", bilinear, false, "weight each tap bilinearly over its 4 nearest texels ((k+1)² tests)");
-      reflectShadowTestBias(b, bias);
-      shadowMap.reflect(b);
-    }
-  };
-
   PercentageCloserFiltering() : ShadowMapScreenTechnique("techniques/pcf/pcf_visibility.frag") {}
-
-  static TechniqueInfo describe() {
-    return {.id = "pcf",
-            .output = OutputKind::Filtered,
-            .citation = "Reeves, Salesin, Cook, Rendering antialiased shadows with depth maps, SIGGRAPH 1987",
-            .summary = "percentage-closer filtering: fraction of k×k nearest depth tests that are lit",
-            .parameters = declaredParameters<Parameters>()};
-  }
-
-  void configure(const ParameterSet& values) override {
-    bindParameters(values, parameters_);
-    configureShadowMap(parameters_.shadowMap);
-  }
 
   void setUniforms(const Program& program) const override {
     program.set("uBias", parameters_.bias);
     program.set("uKernel", parameters_.kernel);
     program.set("uBilinear", parameters_.bilinear ? 1 : 0);
   }
-
- private:
-  Parameters parameters_{};
 };
 
+TESTBED_REGISTER_TECHNIQUE(PercentageCloserFiltering, .id = "pcf", .output = OutputKind::Filtered,
+                           .citation = "Reeves, Salesin, Cook, Rendering antialiased shadows with depth maps, SIGGRAPH 1987",
+                           .summary = "percentage-closer filtering: fraction of k×k nearest depth tests that are lit");
+
 }  // namespace
-
-TESTBED_REGISTER_TECHNIQUE(PercentageCloserFiltering);
-
 }  // namespace testbed

@@ -7,48 +7,38 @@
 namespace testbed {
 namespace {
 
-class ExponentialVarianceShadowMap final : public PrefilteredTechnique {
- public:
-  struct Parameters {
-    float positiveExponent, negativeExponent;
-    int moments;  // 2 or 4
-    float minVariance, bleedReduction;
-    MomentsPass::Parameters momentsPass;
-    void reflect(ParameterBinder& b) {
-      // 32-bit floats as in the paper. The second moment exp(2c) must fit a float with room
-      // for the variance plus (t − μ)² of Chebyshev's denominator: c ≤ 42 (exp(84) ≈ 3e36).
-      b.real("positive_exponent", positiveExponent, 40.0, 1.0, 42.0, "c+ of the warp exp(c+ z), z in [-1, 1]");
-      b.real("negative_exponent", negativeExponent, 5.0, 1.0, 42.0, "c- of the warp -exp(-c- z), z in [-1, 1]");
-      b.choice("moments", moments, 4, {{"2", 2}, {"4", 4}},
-               "2: positive warp only (RG32F); 4: both warps, min of the bounds (RGBA32F)");
-      b.real("min_variance", minVariance, 1e-6, 0.0, 1e-3,  // as vsm's, see vsm.cpp
-             "variance floor in normalized linear depth, scaled by each warp's slope");
-      b.real("bleed_reduction", bleedReduction, 0.0, 0.0, 0.99,
-             "light-bleeding reduction: linstep(amount, 1, p_max); 0 = none");
-      momentsPass.reflect(b);
-    }
-  };
-
-  static TechniqueInfo describe() {
-    return {.id = "evsm",
-            .output = OutputKind::Filtered,
-            .citation = "Lauritzen & McCool, Layered variance shadow maps, GI 2008",
-            .summary = "exponential variance shadow maps: Chebyshev on exp-warped depth, 32-bit float",
-            .parameters = declaredParameters<Parameters>()};
-  }
-
-  void configure(const ParameterSet& values) override {
-    Parameters p{};
-    bindParameters(values, p);
-    configureShared(p.momentsPass,
-                    p.moments == 4 ? MomentsFormat{GL_RGBA32F, "encodeEvsm4", "visibilityEvsm4"}
-                                   : MomentsFormat{GL_RG32F, "encodeEvsm2", "visibilityEvsm2"},
-                    glm::vec4(p.positiveExponent, p.negativeExponent, p.minVariance, p.bleedReduction));
+struct EvsmParameters {
+  float positiveExponent, negativeExponent;
+  int momentCount;  // 2 or 4
+  float minVariance, bleedReduction;
+  MomentsPass::Parameters moments;
+  void reflect(ParameterBinder& b) {
+    // 32-bit floats as in the paper. The second moment exp(2c) must fit a float with room
+    // for the variance plus (t − μ)² of Chebyshev's denominator: c ≤ 42 (exp(84) ≈ 3e36).
+    b.real("positive_exponent", positiveExponent, 40.0, 1.0, 42.0, "c+ of the warp exp(c+ z), z in [-1, 1]");
+    b.real("negative_exponent", negativeExponent, 5.0, 1.0, 42.0, "c- of the warp -exp(-c- z), z in [-1, 1]");
+    b.choice("moments", momentCount, 4, {{"2", 2}, {"4", 4}},
+             "2: positive warp only (RG32F); 4: both warps, min of the bounds (RGBA32F)");
+    b.real("min_variance", minVariance, 1e-6, 0.0, 1e-3,  // as vsm's, see vsm.cpp
+           "variance floor in normalized linear depth, scaled by each warp's slope");
+    b.real("bleed_reduction", bleedReduction, 0.0, 0.0, 0.99,
+           "light-bleeding reduction: linstep(amount, 1, p_max); 0 = none");
+    moments.reflect(b);
   }
 };
 
+class ExponentialVarianceShadowMap final : public PrefilteredTechnique<EvsmParameters> {
+  void configured() override {
+    const EvsmParameters& p = parameters_;
+    setEncoding(p.momentCount == 4 ? MomentsFormat{GL_RGBA32F, "encodeEvsm4", "visibilityEvsm4"}
+                                   : MomentsFormat{GL_RG32F, "encodeEvsm2", "visibilityEvsm2"},
+                glm::vec4(p.positiveExponent, p.negativeExponent, p.minVariance, p.bleedReduction));
+  }
+};
+
+TESTBED_REGISTER_TECHNIQUE(ExponentialVarianceShadowMap, .id = "evsm", .output = OutputKind::Filtered,
+                           .citation = "Lauritzen & McCool, Layered variance shadow maps, GI 2008",
+                           .summary = "exponential variance shadow maps: Chebyshev on exp-warped depth, 32-bit float");
+
 }  // namespace
-
-TESTBED_REGISTER_TECHNIQUE(ExponentialVarianceShadowMap);
-
 }  // namespace testbed

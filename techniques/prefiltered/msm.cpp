@@ -7,47 +7,36 @@
 namespace testbed {
 namespace {
 
-class MomentShadowMap final : public PrefilteredTechnique {
- public:
-  struct Parameters {
-    float momentBias;
-    bool quantized;  // storage=16
-    MomentsPass::Parameters moments;
-    void reflect(ParameterBinder& b) {
-      // The paper's α = 3e-5 (for its 16-bit quantization) is the default for both storages.
-      // Measured: with 16-bit storage it does not cover the rounding where the normalized
-      // depth is small (below ~0.15: fence.json's floor near the light, far plane 300 with
-      // the scene at 30..120) and lit receivers there speckle (overestimation 0.15% on the
-      // fence); storage=32, or moment_bias=1e-4, removes it. Fit the light's near/far planes.
-      b.real("moment_bias", momentBias, 3e-5, 0.0, 1e-2,
-             "alpha: moments mixed with (0.5, 0.5, 0.5, 0.5) by this amount; 3e-5 is the "
-             "paper's value for 16-bit storage");
-      b.choice("storage", quantized, true, {{"16", true}, {"32", false}},
-               "16: RGBA16 with the paper's optimized quantization; 32: RGBA32F moments");
-      moments.reflect(b);
-    }
-  };
-
-  static TechniqueInfo describe() {
-    return {.id = "msm",
-            .output = OutputKind::Filtered,
-            .citation = "Peters & Klein, Moment shadow mapping, I3D 2015",
-            .summary = "moment shadow maps: 4 moments, Hamburger 4MSM bound, optimized 16-bit quantization",
-            .parameters = declaredParameters<Parameters>()};
-  }
-
-  void configure(const ParameterSet& values) override {
-    Parameters p{};
-    bindParameters(values, p);
-    configureShared(p.moments,
-                    p.quantized ? MomentsFormat{GL_RGBA16, "encodeMsm16", "visibilityMsm16"}
-                                : MomentsFormat{GL_RGBA32F, "encodeMsm32", "visibilityMsm32"},
-                    glm::vec4(p.momentBias, 0, 0, 0));
+struct MsmParameters {
+  float momentBias;
+  bool quantized;  // storage=16
+  MomentsPass::Parameters moments;
+  void reflect(ParameterBinder& b) {
+    // The paper's α = 3e-5 (for its 16-bit quantization) is the default for both storages.
+    // Measured: with 16-bit storage it does not cover the rounding where the normalized
+    // depth is small (below ~0.15: fence.json's floor near the light, far plane 300 with
+    // the scene at 30..120) and lit receivers there speckle (overestimation 0.15% on the
+    // fence); storage=32, or moment_bias=1e-4, removes it. Fit the light's near/far planes.
+    b.real("moment_bias", momentBias, 3e-5, 0.0, 1e-2,
+           "alpha: moments mixed with (0.5, 0.5, 0.5, 0.5) by this amount; 3e-5 is the "
+           "paper's value for 16-bit storage");
+    b.choice("storage", quantized, true, {{"16", true}, {"32", false}},
+             "16: RGBA16 with the paper's optimized quantization; 32: RGBA32F moments");
+    moments.reflect(b);
   }
 };
 
+class MomentShadowMap final : public PrefilteredTechnique<MsmParameters> {
+  void configured() override {
+    setEncoding(parameters_.quantized ? MomentsFormat{GL_RGBA16, "encodeMsm16", "visibilityMsm16"}
+                                      : MomentsFormat{GL_RGBA32F, "encodeMsm32", "visibilityMsm32"},
+                glm::vec4(parameters_.momentBias, 0, 0, 0));
+  }
+};
+
+TESTBED_REGISTER_TECHNIQUE(MomentShadowMap, .id = "msm", .output = OutputKind::Filtered,
+                           .citation = "Peters & Klein, Moment shadow mapping, I3D 2015",
+                           .summary = "moment shadow maps: 4 moments, Hamburger 4MSM bound, optimized 16-bit quantization");
+
 }  // namespace
-
-TESTBED_REGISTER_TECHNIQUE(MomentShadowMap);
-
 }  // namespace testbed

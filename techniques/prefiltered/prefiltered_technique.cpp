@@ -4,15 +4,15 @@
 
 namespace testbed {
 
-void PrefilteredTechnique::configureShared(const MomentsPass::Parameters& moments, MomentsFormat format,
-                                           glm::vec4 params) {
-  moments_.configure(moments);
+void PrefilteredBase::configureMoments(const MomentsPass::Parameters& moments) { moments_.configure(moments); }
+
+void PrefilteredBase::setEncoding(MomentsFormat format, glm::vec4 params) {
   format_ = std::move(format);
   params_ = params;
   visibility_ = Program();  // recompiled for this format on the next render
 }
 
-void PrefilteredTechnique::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
+void PrefilteredBase::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
   if (!visibility_)
     visibility_ = Program::graphics("testbed/render/fullscreen.vert", "techniques/prefiltered/visibility.frag",
                                     format_.defines());

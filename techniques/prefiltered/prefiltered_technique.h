@@ -1,24 +1,26 @@
 #pragma once
 // The base of vsm, esm, evsm and msm: the shared moments and blur passes (MomentsPass),
 // then one screen pass (visibility.frag) that samples the filtered moments once per
-// receiver. A technique only declares its parameters (its own, then the MomentsPass
-// ones) and, in configure(), fills in its MomentsFormat and the four numbers its GLSL
-// entry points read.
+// receiver. A technique derives PrefilteredTechnique<P>, declares its parameters (its
+// own, then the MomentsPass ones as `moments`) and, in configured(), sets its
+// MomentsFormat and the four numbers its GLSL entry points read.
 #include <glm/glm.hpp>
 
 #include "techniques/prefiltered/moments_pass.h"
 #include "testbed/render/screen_pass.h"
 #include "testbed/technique/technique.h"
+#include "testbed/technique/with_parameters.h"
 
 namespace testbed {
 
-class PrefilteredTechnique : public ShadowTechnique {
+class PrefilteredBase : public ShadowTechnique {
  public:
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) final;
 
  protected:
-  // Call from configure(): the shared passes' parameters plus the technique's choice.
-  void configureShared(const MomentsPass::Parameters& moments, MomentsFormat format, glm::vec4 params);
+  void configureMoments(const MomentsPass::Parameters& moments);
+  // From configured(): the technique's storage and the `params` of its GLSL entry points.
+  void setEncoding(MomentsFormat format, glm::vec4 params);
 
  private:
   MomentsPass moments_;
@@ -26,6 +28,13 @@ class PrefilteredTechnique : public ShadowTechnique {
   glm::vec4 params_{0.0f};
   ScreenPass screen_;
   Program visibility_;
+};
+
+// P: the technique's parameter struct, holding the MomentsPass ones as `moments`.
+template <class P>
+class PrefilteredTechnique : public WithParameters<P, PrefilteredBase> {
+ private:
+  void configureShared() final { this->configureMoments(this->parameters_.moments); }
 };
 
 }  // namespace testbed

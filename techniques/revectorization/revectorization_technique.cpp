@@ -82,12 +82,12 @@ std::vector<std::pair<std::string, ImageF>> Common::debugImages() const {
   return {};
 }
 
-void SinglePassTechnique::configureCommon(const CommonParameters& parameters) {
+void SinglePassBase::configureCommon(const CommonParameters& parameters) {
   shadowMap_.configure(parameters.shadowMap);
   common_.configure(parameters);
 }
 
-void SinglePassTechnique::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
+void SinglePassBase::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
   shadowMap_.render(in, timer);
   const auto bind = [&](const Program& program) {
     bindReceiverInputs(program, in);

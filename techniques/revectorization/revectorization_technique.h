@@ -3,6 +3,7 @@
 // rpcf-smsr, rpcf-rsmss): the shared shadow map, one "revectorize" screen pass running the
 // technique's own fragment shader, the common parameters, and the debug views.
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "testbed/render/screen_pass.h"
 #include "testbed/render/shadow_map_pass.h"
 #include "testbed/technique/technique.h"
+#include "testbed/technique/with_parameters.h"
 
 namespace testbed::revectorization {
 
@@ -57,9 +59,9 @@ class Common {
   ImageF debugImage_;
 };
 
-// A technique made of the shared shadow map and one screen pass (edge_split_pass.h),
-// timed "classify" (every pixel) and "revectorize" (the edge pixels).
-class SinglePassTechnique : public ShadowTechnique {
+// The passes of a technique made of the shared shadow map and one screen pass
+// (edge_split_pass.h), timed "classify" (every pixel) and "revectorize" (the edge pixels).
+class SinglePassBase : public ShadowTechnique {
  public:
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) final;
   std::vector<std::pair<std::string, ImageF>> debugImages() const override { return common_.debugImages(); }
@@ -67,8 +69,7 @@ class SinglePassTechnique : public ShadowTechnique {
  protected:
   // `fragmentKey`: the technique's shader; `bothSides`: whether exiting discontinuities
   // take part (debug view only; the shader decides for itself).
-  SinglePassTechnique(std::string fragmentKey, bool bothSides) : bothSides_(bothSides), screen_(std::move(fragmentKey)) {}
-  // From configure(): the CommonParameters among the technique's.
+  SinglePassBase(std::string fragmentKey, bool bothSides) : bothSides_(bothSides), screen_(std::move(fragmentKey)) {}
   void configureCommon(const CommonParameters& parameters);
   virtual void setTechniqueUniforms(const Program& program) const = 0;
   // Compile-time settings of the screen pass's shaders.
@@ -79,6 +80,36 @@ class SinglePassTechnique : public ShadowTechnique {
   ShadowMapPass shadowMap_;
   EdgeSplitPass screen_;
   Common common_;
+};
+
+// P: the technique's parameter struct, holding the family's as `common`, or
+// CommonParameters itself for a technique with none of its own (rsmss).
+template <class P>
+class SinglePassTechnique : public WithParameters<P, SinglePassBase> {
+ protected:
+  using WithParameters<P, SinglePassBase>::WithParameters;
+
+ private:
+  void configureShared() final {
+    if constexpr (std::is_same_v<P, CommonParameters>)
+      this->configureCommon(this->parameters_);
+    else
+      this->configureCommon(this->parameters_.common);
+  }
+};
+
+// smsr and rpcf-smsr: P's `improved` (reflectVisibility) selects the shader's function,
+// and the improved one traverses the shadowed side too (debug view).
+template <class Technique>
+class WithVisibilityChoice : public Technique {
+ protected:
+  using Technique::Technique;
+
+ private:
+  void configured() override { this->bothSides_ = this->parameters_.improved; }
+  void setTechniqueUniforms(const Program& program) const override {
+    program.set("uImproved", this->parameters_.improved ? 1 : 0);
+  }
 };
 
 }  // namespace testbed::revectorization

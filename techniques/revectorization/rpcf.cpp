@@ -11,84 +11,56 @@ namespace {
 
 const char* kCitation = "Macedo, Apolinário, Revectorization-Based Shadow Mapping, GI 2016";
 
-// The kernel compiled into the screen pass (rpcf.glsl), so its tap loops unroll.
-std::string kernelDefine(int kernel) { return "#define RPCF_KERNEL " + std::to_string(kernel) + "\n"; }
-
-class RpcfSmsr final : public SinglePassTechnique {
- public:
-  RpcfSmsr() : SinglePassTechnique("techniques/revectorization/rpcf_smsr.frag", false) {}
-
-  struct Parameters {
-    int kernel;
-    bool improved;
-    CommonParameters common;
-    void reflect(ParameterBinder& b) {
-      reflectKernel(b, kernel);
-      reflectVisibility(b, improved);
-      common.reflect(b);
-    }
-  };
-
-  static TechniqueInfo describe() {
-    return {.id = "rpcf-smsr",
-            .output = OutputKind::Filtered,
-            .citation = kCitation,
-            .summary = "PCF whose k×k taps are each revectorized by SMSR (eq. 2)",
-            .parameters = declaredParameters<Parameters>()};
-  }
-
-  void configure(const ParameterSet& values) override {
-    bindParameters(values, parameters_);
-    configureCommon(parameters_.common);
-    bothSides_ = parameters_.improved;
-  }
+// A k×k box of revectorized taps: the kernel is compiled into the screen pass (rpcf.glsl),
+// so its tap loops unroll. P holds it as `kernel`.
+template <class P>
+class Rpcf : public SinglePassTechnique<P> {
+ protected:
+  using SinglePassTechnique<P>::SinglePassTechnique;
 
  private:
-  void setTechniqueUniforms(const Program& program) const override {
-    program.set("uImproved", parameters_.improved ? 1 : 0);
+  std::string shaderDefines() const final {
+    return "#define RPCF_KERNEL " + std::to_string(this->parameters_.kernel) + "\n";
   }
-  std::string shaderDefines() const override { return kernelDefine(parameters_.kernel); }
-  Parameters parameters_{};
 };
 
-class RpcfRsmss final : public SinglePassTechnique {
+struct RpcfSmsrParameters {
+  int kernel;
+  bool improved;
+  CommonParameters common;
+  void reflect(ParameterBinder& b) {
+    reflectKernel(b, kernel);
+    reflectVisibility(b, improved);
+    common.reflect(b);
+  }
+};
+
+class RpcfSmsr final : public WithVisibilityChoice<Rpcf<RpcfSmsrParameters>> {
  public:
-  RpcfRsmss() : SinglePassTechnique("techniques/revectorization/rpcf_rsmss.frag", true) {}
+  RpcfSmsr() : WithVisibilityChoice("techniques/revectorization/rpcf_smsr.frag", false) {}
+};
 
-  struct Parameters {
-    int kernel;
-    CommonParameters common;
-    void reflect(ParameterBinder& b) {
-      reflectKernel(b, kernel);
-      common.reflect(b);
-    }
-  };
-
-  static TechniqueInfo describe() {
-    return {.id = "rpcf-rsmss",
-            .output = OutputKind::Filtered,
-            .citation = kCitation,
-            .summary = "PCF whose k×k taps are each smoothed by RSMSS (eq. 3)",
-            .parameters = declaredParameters<Parameters>()};
+struct RpcfRsmssParameters {
+  int kernel;
+  CommonParameters common;
+  void reflect(ParameterBinder& b) {
+    reflectKernel(b, kernel);
+    common.reflect(b);
   }
+};
 
-  void configure(const ParameterSet& values) override {
-    bindParameters(values, parameters_);
-    configureCommon(parameters_.common);
-  }
+class RpcfRsmss final : public Rpcf<RpcfRsmssParameters> {
+ public:
+  RpcfRsmss() : Rpcf("techniques/revectorization/rpcf_rsmss.frag", true) {}
 
  private:
   void setTechniqueUniforms(const Program&) const override {}
-  std::string shaderDefines() const override { return kernelDefine(parameters_.kernel); }
-  Parameters parameters_{};
 };
+
+TESTBED_REGISTER_TECHNIQUE(RpcfSmsr, .id = "rpcf-smsr", .output = OutputKind::Filtered, .citation = kCitation,
+                           .summary = "PCF whose k×k taps are each revectorized by SMSR (eq. 2)");
+TESTBED_REGISTER_TECHNIQUE(RpcfRsmss, .id = "rpcf-rsmss", .output = OutputKind::Filtered, .citation = kCitation,
+                           .summary = "PCF whose k×k taps are each smoothed by RSMSS (eq. 3)");
 
 }  // namespace
 }  // namespace testbed::revectorization
-
-namespace testbed {
-using revectorization::RpcfRsmss;
-using revectorization::RpcfSmsr;
-TESTBED_REGISTER_TECHNIQUE(RpcfSmsr);
-TESTBED_REGISTER_TECHNIQUE(RpcfRsmss);
-}  // namespace testbed

@@ -7,32 +7,18 @@
 namespace testbed::revectorization {
 namespace {
 
-class Rsmss final : public SinglePassTechnique {
+// The family's parameters only.
+class Rsmss final : public SinglePassTechnique<CommonParameters> {
  public:
   Rsmss() : SinglePassTechnique("techniques/revectorization/rsmss.frag", true) {}
-
-  static TechniqueInfo describe() {
-    return {.id = "rsmss",
-            .output = OutputKind::Filtered,
-            .citation = "Macedo, Apolinário, Revectorization-Based Shadow Mapping, GI 2016",
-            .summary = "revectorization-based silhouette smoothing: continuous visibility over both edge sides",
-            .parameters = declaredParameters<CommonParameters>()};
-  }
-
-  void configure(const ParameterSet& values) override {
-    CommonParameters common{};
-    bindParameters(values, common);
-    configureCommon(common);
-  }
 
  private:
   void setTechniqueUniforms(const Program&) const override {}
 };
 
+TESTBED_REGISTER_TECHNIQUE(Rsmss, .id = "rsmss", .output = OutputKind::Filtered,
+                           .citation = "Macedo, Apolinário, Revectorization-Based Shadow Mapping, GI 2016",
+                           .summary = "revectorization-based silhouette smoothing: continuous visibility over both edge sides");
+
 }  // namespace
 }  // namespace testbed::revectorization
-
-namespace testbed {
-using revectorization::Rsmss;
-TESTBED_REGISTER_TECHNIQUE(Rsmss);
-}  // namespace testbed

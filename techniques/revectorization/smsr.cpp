@@ -10,44 +10,23 @@
 namespace testbed::revectorization {
 namespace {
 
-class Smsr final : public SinglePassTechnique {
- public:
-  Smsr() : SinglePassTechnique("techniques/revectorization/smsr.frag", false) {}
-
-  struct Parameters {
-    bool improved;
-    CommonParameters common;
-    void reflect(ParameterBinder& b) {
-      reflectVisibility(b, improved);
-      common.reflect(b);
-    }
-  };
-
-  static TechniqueInfo describe() {
-    return {.id = "smsr",
-            .output = OutputKind::Hard,
-            .citation = "Macedo, Apolinário, Revectorization-Based Shadow Mapping, GI 2016",
-            .summary = "single-pass shadow map silhouette revectorization (hard, light-space traversal)",
-            .parameters = declaredParameters<Parameters>()};
+struct SmsrParameters {
+  bool improved;
+  CommonParameters common;
+  void reflect(ParameterBinder& b) {
+    reflectVisibility(b, improved);
+    common.reflect(b);
   }
-
-  void configure(const ParameterSet& values) override {
-    bindParameters(values, parameters_);
-    configureCommon(parameters_.common);
-    bothSides_ = parameters_.improved;  // the improved function traverses the shadowed side too
-  }
-
- private:
-  void setTechniqueUniforms(const Program& program) const override {
-    program.set("uImproved", parameters_.improved ? 1 : 0);
-  }
-  Parameters parameters_{};
 };
+
+class Smsr final : public WithVisibilityChoice<SinglePassTechnique<SmsrParameters>> {
+ public:
+  Smsr() : WithVisibilityChoice("techniques/revectorization/smsr.frag", false) {}
+};
+
+TESTBED_REGISTER_TECHNIQUE(Smsr, .id = "smsr", .output = OutputKind::Hard,
+                           .citation = "Macedo, Apolinário, Revectorization-Based Shadow Mapping, GI 2016",
+                           .summary = "single-pass shadow map silhouette revectorization (hard, light-space traversal)");
 
 }  // namespace
 }  // namespace testbed::revectorization
-
-namespace testbed {
-using revectorization::Smsr;
-TESTBED_REGISTER_TECHNIQUE(Smsr);
-}  // namespace testbed

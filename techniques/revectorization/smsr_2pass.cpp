@@ -19,23 +19,9 @@
 namespace testbed::revectorization {
 namespace {
 
-class SmsrTwoPass final : public ShadowTechnique {
+// The family's parameters only.
+class SmsrTwoPass final : public WithParameters<CommonParameters> {
  public:
-  static TechniqueInfo describe() {
-    return {.id = "smsr-2pass",
-            .output = OutputKind::Hard,
-            .citation = "Bondarev, Shadow map silhouette revectorization, I3D 2014",
-            .summary = "two-pass SMSR: screen-space discontinuity map, then a screen-space edge search",
-            .parameters = declaredParameters<CommonParameters>()};
-  }
-
-  void configure(const ParameterSet& values) override {
-    CommonParameters common{};
-    bindParameters(values, common);
-    shadowMap_.configure(common.shadowMap);
-    common_.configure(common);
-  }
-
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {
     if (!discProgram_) {
       discProgram_ = Program::graphics("testbed/render/gbuffer.vert",
@@ -63,6 +49,11 @@ class SmsrTwoPass final : public ShadowTechnique {
   std::vector<std::pair<std::string, ImageF>> debugImages() const override { return common_.debugImages(); }
 
  private:
+  void configured() override {
+    shadowMap_.configure(parameters_.shadowMap);
+    common_.configure(parameters_);
+  }
+
   // The inputs of smsr_2pass_search.glsl: receivers, shadow map, library, pass 1's map.
   void bindSearchInputs(const Program& program, const FrameInputs& in) const {
     bindReceiverInputs(program, in);
@@ -111,10 +102,9 @@ class SmsrTwoPass final : public ShadowTechnique {
   RenderTarget disc_;  // pass 1's screen-space discontinuity map
 };
 
+TESTBED_REGISTER_TECHNIQUE(SmsrTwoPass, .id = "smsr-2pass", .output = OutputKind::Hard,
+                           .citation = "Bondarev, Shadow map silhouette revectorization, I3D 2014",
+                           .summary = "two-pass SMSR: screen-space discontinuity map, then a screen-space edge search");
+
 }  // namespace
 }  // namespace testbed::revectorization
-
-namespace testbed {
-using revectorization::SmsrTwoPass;
-TESTBED_REGISTER_TECHNIQUE(SmsrTwoPass);
-}  // namespace testbed

@@ -15,37 +15,25 @@
 #include "testbed/render/shadow_map_pass.h"
 #include "testbed/technique/registry.h"
 #include "testbed/technique/technique.h"
+#include "testbed/technique/with_parameters.h"
 
 namespace testbed {
 namespace {
 
-class SilhouetteMap final : public ShadowTechnique {
+struct SilhouetteMapParameters {
+  float bias, occlusionBias;
+  ShadowMapPass::Parameters shadowMap;
+  void reflect(ParameterBinder& b) {
+    reflectShadowTestBias(b, bias);
+    b.real("occlusion_bias", occlusionBias, 0.001, 0.0, 1.0,
+           "depth tolerance of the hidden-edge test: an edge point counts as hidden "
+           "when it lies farther than this behind all four corner depth samples");
+    shadowMap.reflect(b);
+  }
+};
+
+class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
  public:
-  struct Parameters {
-    float bias, occlusionBias;
-    ShadowMapPass::Parameters shadowMap;
-    void reflect(ParameterBinder& b) {
-      reflectShadowTestBias(b, bias);
-      b.real("occlusion_bias", occlusionBias, 0.001, 0.0, 1.0,
-             "depth tolerance of the hidden-edge test: an edge point counts as hidden "
-             "when it lies farther than this behind all four corner depth samples");
-      shadowMap.reflect(b);
-    }
-  };
-
-  static TechniqueInfo describe() {
-    return {.id = "silhouette-map",
-            .output = OutputKind::Hard,
-            .citation = "Sen, Cammarano, Hanrahan, Shadow silhouette maps, SIGGRAPH 2003",
-            .summary = "depth map plus one silhouette point per dual-grid texel; piecewise-linear shadow edges",
-            .parameters = declaredParameters<Parameters>()};
-  }
-
-  void configure(const ParameterSet& values) override {
-    bindParameters(values, parameters_);
-    shadowMap_.configure(parameters_.shadowMap);
-  }
-
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {
     prepare(in);
     shadowMap_.render(in, timer);
@@ -64,6 +52,8 @@ class SilhouetteMap final : public ShadowTechnique {
   }
 
  private:
+  void configured() override { shadowMap_.configure(parameters_.shadowMap); }
+
   // Programs, the (N + 1)² silhouette map and the scene's adjacency, made once.
   void prepare(const FrameInputs& in) {
     if (!edgeProgram_) {
@@ -109,7 +99,6 @@ class SilhouetteMap final : public ShadowTechnique {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
   }
 
-  Parameters parameters_{};
   ShadowMapPass shadowMap_;
   revectorization::EdgeSplitPass visibility_{"techniques/silhouette_map/silhouette_map_visibility.frag"};
   Program edgeProgram_;
@@ -121,8 +110,9 @@ class SilhouetteMap final : public ShadowTechnique {
   const Scene* topologyScene_ = nullptr;
 };
 
+TESTBED_REGISTER_TECHNIQUE(SilhouetteMap, .id = "silhouette-map", .output = OutputKind::Hard,
+                           .citation = "Sen, Cammarano, Hanrahan, Shadow silhouette maps, SIGGRAPH 2003",
+                           .summary = "depth map plus one silhouette point per dual-grid texel; piecewise-linear shadow edges");
+
 }  // namespace
-
-TESTBED_REGISTER_TECHNIQUE(SilhouetteMap);
-
 }  // namespace testbed

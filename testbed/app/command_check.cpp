@@ -43,8 +43,7 @@ CommandRunner addCheckCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--out", options->out, "also write the markdown report to this file");
 
-  return [command, options]() {
-    if (!command->parsed()) return -1;
+  return {command, [options]() {
     checkTolerance("--speed-tolerance", options->tolerances.speed);
     checkTolerance("--error-tolerance", options->tolerances.error);
     // Every input error before anything is written or printed; OutputFiles stages and
@@ -69,7 +68,7 @@ CommandRunner addCheckCommand(CLI::App& app) {
       files->commit();
     }
     return report.failed() ? kRegressionsFound : 0;
-  };
+  }};
 }
 
 }  // namespace testbed

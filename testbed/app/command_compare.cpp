@@ -85,15 +85,12 @@ CommandRunner addCompareCommand(CLI::App& app) {
   auto* command = app.add_subcommand("compare", "rank techniques against the ground truth on one scene");
   command->add_option("--scene", options->scene, "scene file (JSON)")->required();
   command->add_option("--techniques", options->techniques, "all, or a comma-separated list")->capture_default_str();
-  command->add_option("--set", options->assignments, "technique.parameter=value (repeatable)")
-      ->expected(1)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  addSetOption(*command, options->assignments, "technique.parameter=value (repeatable)");
   command->add_option("--area-samples", options->areaSamples,
                       "also render the area-light reference with N samples (gives soft_rmse)");
   options->common.addTo(*command);
 
-  return [command, options]() {
-    if (!command->parsed()) return -1;
+  return {command, [options]() {
     const RenderSettings settings = options->common.settings();
     loadPlugins(options->common.plugins);
     const auto techniques = chooseTechniques(options->techniques);
@@ -176,7 +173,7 @@ CommandRunner addCompareCommand(CLI::App& app) {
     std::cerr << "testbed: wrote report.md, grid.png, speed_vs_error.svg, metrics.json to "
               << oneLine(options->common.out) << "\n";
     return 0;
-  };
+  }};
 }
 
 }  // namespace testbed

@@ -30,8 +30,7 @@ CommandRunner addGroundTruthCommand(CLI::App& app) {
   command->add_option("--area-samples", options->areaSamples, "also render the area-light reference with N samples");
   options->common.addTo(*command);
 
-  return [command, options]() {
-    if (!command->parsed()) return -1;
+  return {command, [options]() {
     const RenderSettings settings = options->common.settings();
     loadPlugins(options->common.plugins);  // accepted like the other commands: one flag set for scripts
     if (options->method != "volumes" && options->method != "raycast")
@@ -64,7 +63,7 @@ CommandRunner addGroundTruthCommand(CLI::App& app) {
     files.commit();
     std::cerr << "testbed: wrote to " << oneLine(options->common.out) << "\n";
     return 0;
-  };
+  }};
 }
 
 }  // namespace testbed

@@ -31,8 +31,7 @@ CommandRunner addListCommand(CLI::App& app) {
   command->add_flag("--markdown", *markdown, "print the README's technique table");
   auto plugins = std::make_shared<std::vector<std::string>>();
   addPluginOption(*command, *plugins);
-  return [command, json, markdown, plugins]() {
-    if (!command->parsed()) return -1;
+  return {command, [json, markdown, plugins]() {
     loadPlugins(*plugins);
     const auto techniques = registeredTechniques();
     if (*markdown) {
@@ -63,7 +62,7 @@ CommandRunner addListCommand(CLI::App& app) {
                   << typeName(spec.type) << ") " << spec.help << "\n";
     }
     return 0;
-  };
+  }};
 }
 
 }  // namespace testbed

@@ -49,13 +49,12 @@ CommandRunner addMergeCommand(CLI::App& app) {
   };
   auto options = std::make_shared<Options>();
   auto* command = app.add_subcommand("merge", "join the shards of one sweep into its tables");
-  command->add_option("--out", options->out, "output folder")->required();
+  addOutOption(*command, options->out);
   command->add_option("shards", options->shards, "the shards' --out folders")->required();
-  command->add_flag("--no-plot", options->noPlot, "skip the matplotlib plots");
+  addNoPlotFlag(*command, options->noPlot);
   addPluginOption(*command, options->plugins);
 
-  return [command, options]() {
-    if (!command->parsed()) return -1;
+  return {command, [options]() {
     if (fs::exists(options->out) && !fs::is_directory(options->out))
       throw InputError("--out: " + options->out + " exists and is not a folder");
     loadPlugins(options->plugins);
@@ -145,7 +144,7 @@ CommandRunner addMergeCommand(CLI::App& app) {
     if (!options->noPlot) plotSweepTables(options->out, spec.name);
     std::cerr << "testbed: merged " << shards.size() << " shards, " << records.size() << " records, into " << options->out << "\n";
     return 0;
-  };
+  }};
 }
 
 }  // namespace testbed

@@ -22,13 +22,10 @@ CommandRunner addRenderCommand(CLI::App& app) {
   auto* command = app.add_subcommand("render", "render one technique on one scene");
   command->add_option("--scene", options->scene, "scene file (JSON)")->required();
   command->add_option("--technique", options->technique, "technique id (see `testbed list`)")->required();
-  command->add_option("--set", options->assignments, "technique parameter name=value (repeatable)")
-      ->expected(1)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  addSetOption(*command, options->assignments, "technique parameter name=value (repeatable)");
   options->common.addTo(*command);
 
-  return [command, options]() {
-    if (!command->parsed()) return -1;
+  return {command, [options]() {
     // Everything the user typed is checked before any GL work or any file is written.
     const RenderSettings settings = options->common.settings();
     loadPlugins(options->common.plugins);
@@ -58,7 +55,7 @@ CommandRunner addRenderCommand(CLI::App& app) {
     std::cerr << "testbed: wrote " << id << ".png, .exr, .json to " << oneLine(options->common.out) << " ("
               << briefSummary(record, nullptr, ", ") << ", " << run.memoryBytes << " bytes)\n";
     return 0;
-  };
+  }};
 }
 
 }  // namespace testbed

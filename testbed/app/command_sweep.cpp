@@ -63,11 +63,10 @@ CommandRunner addSweepCommand(CLI::App& app) {
   auto* command = app.add_subcommand("sweep", "run a paper table's cells (a spec in paper/), or one shard of them");
   command->add_option("--spec", options->spec, "sweep spec (JSON)")->required();
   command->add_option("--shard", options->shard, "run the K-th of N deterministic parts of the cells")->capture_default_str();
-  command->add_flag("--no-plot", options->noPlot, "skip the matplotlib plots");
+  addNoPlotFlag(*command, options->noPlot);
   options->common.addTo(*command);
 
-  return [command, options]() {
-    if (!command->parsed()) return -1;
+  return {command, [command, options]() {
     options->common.settings();  // checks --out and the text options before anything runs
     // Options given on the command line override every level of the spec.
     SweepOverrides overrides;
@@ -190,7 +189,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
     std::cerr << "testbed: " << records.size() << " records of " << plan.cells.size() << " cells (shard " << shard.text()
               << ") in " << options->common.out << "\n";
     return 0;
-  };
+  }};
 }
 
 }  // namespace testbed

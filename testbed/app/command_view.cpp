@@ -25,9 +25,7 @@ CommandRunner addViewCommand(CLI::App& app) {
   auto* command = app.add_subcommand("view", "interactive viewer: every technique live, against the ground truth");
   command->add_option("--scene", options->scene, "scene file (JSON)")->required();
   command->add_option("--technique", options->technique, "technique shown first")->capture_default_str();
-  command->add_option("--set", options->assignments, "its parameter name=value (repeatable)")
-      ->expected(1)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  addSetOption(*command, options->assignments, "its parameter name=value (repeatable)");
   auto* frames = command->add_option("--frames", options->frames,
                                      "render N frames (after the script, if any), write the screenshots, exit");
   command->add_option("--screenshot", options->screenshot, "with --frames: the 3D view as PNG (or EXR)")->needs(frames);
@@ -37,8 +35,7 @@ CommandRunner addViewCommand(CLI::App& app) {
   options->common.addTo(*command);
   command->get_option("--out")->required(false)->description("folder for the P key's screenshots");
 
-  return [command, options, frames]() {
-    if (!command->parsed()) return -1;
+  return {command, [options, frames]() {
     const RenderSettings settings = options->common.settings();
     if (options->common.backend != "glfw")
       throw InputError("--backend: view draws into a window, so it runs on glfw only (got '" +
@@ -70,7 +67,7 @@ CommandRunner addViewCommand(CLI::App& app) {
     glfwShowWindow(context->window());
     std::cerr << "testbed: view " << view.scene.name << " (" << context->description() << ")\n";
     return viewer::runViewer(std::move(view), *context);
-  };
+  }};
 }
 
 }  // namespace testbed

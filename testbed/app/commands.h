@@ -1,6 +1,6 @@
 #pragma once
 // Subcommands of the `testbed` binary. Each registers its options on the CLI11 app and
-// returns the function that runs it after parsing.
+// returns the subcommand with the function that runs it when it is the one parsed.
 #include <functional>
 #include <map>
 #include <string>
@@ -13,7 +13,10 @@
 
 namespace testbed {
 
-using CommandRunner = std::function<int()>;
+struct CommandRunner {
+  const CLI::App* command;
+  std::function<int()> run;  // the exit code
+};
 
 // Options shared by render/groundtruth/compare (README "Command line").
 struct CommonOptions {
@@ -32,6 +35,12 @@ struct CommonOptions {
 
 // --plugin PATH (repeatable): technique libraries, see testbed/app/plugins.h.
 void addPluginOption(CLI::App& command, std::vector<std::string>& paths);
+// --out DIR, required: the folder a command writes into.
+void addOutOption(CLI::App& command, std::string& out);
+// --set name=value (repeatable), read by parseAssignments; `help` says whose parameters.
+void addSetOption(CLI::App& command, std::vector<std::string>& assignments, const std::string& help);
+// --no-plot of sweep and merge: skip scripts/sweep_plot.py.
+void addNoPlotFlag(CLI::App& command, bool& noPlot);
 
 // "1280x720" → {1280, 720}; throws InputError("--size: ...").
 glm::ivec2 parseSize(const std::string& text);

@@ -11,14 +11,32 @@ void CommonOptions::addTo(CLI::App& command) {
   command.add_option("--depth-format", depthFormat, "shadow map depth: 16, 24 or 32f")->capture_default_str();
   command.add_option("--backend", backend, "GL context: osmesa or egl")->capture_default_str();
   command.add_option("--repeat", repeat, "timed frames after one warm-up frame (medians)")->capture_default_str();
-  command.add_option("--out", out, "output folder")->required();
+  addOutOption(command, out);
   addPluginOption(command, plugins);
 }
 
+namespace {
+
+// A string option given once per value, any number of times.
+void addRepeatable(CLI::App& command, const std::string& name, std::vector<std::string>& values,
+                   const std::string& help) {
+  command.add_option(name, values, help)->expected(1)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
+}  // namespace
+
 void addPluginOption(CLI::App& command, std::vector<std::string>& paths) {
-  command.add_option("--plugin", paths, "load techniques from a plugin library (repeatable)")
-      ->expected(1)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  addRepeatable(command, "--plugin", paths, "load techniques from a plugin library (repeatable)");
+}
+
+void addOutOption(CLI::App& command, std::string& out) { command.add_option("--out", out, "output folder")->required(); }
+
+void addSetOption(CLI::App& command, std::vector<std::string>& assignments, const std::string& help) {
+  addRepeatable(command, "--set", assignments, help);
+}
+
+void addNoPlotFlag(CLI::App& command, bool& noPlot) {
+  command.add_flag("--no-plot", noPlot, "skip the matplotlib plots");
 }
 
 glm::ivec2 parseSize(const std::string& text) {

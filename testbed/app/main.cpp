@@ -46,10 +46,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    for (const auto& command : commands) {
-      const int code = command();
-      if (code >= 0) return code;
-    }
+    for (const auto& command : commands)
+      if (command.command->parsed()) return command.run();
     return 2;
   } catch (const testbed::InputError& error) {
     testbed::breakProgressLine();

@@ -16,6 +16,13 @@ namespace {
 thread_local GpuMemoryLedger* t_currentLedger = nullptr;
 std::atomic<std::uint64_t> g_processBytes{0};
 
+// One new name from glCreateBuffers, glCreateFramebuffers or glCreateVertexArrays.
+GLuint createName(PFNGLCREATEBUFFERSPROC create) {
+  GLuint id = 0;
+  create(1, &id);
+  return id;
+}
+
 }  // namespace
 
 GpuMemoryLedger::Scope::Scope(GpuMemoryLedger& ledger) : previous_(t_currentLedger) {
@@ -135,8 +142,7 @@ Buffer::Buffer(GLuint id, std::uint64_t bytes)
     : GlObject(id, bytes, [](GLuint name) { glDeleteBuffers(1, &name); }) {}
 
 Buffer Buffer::create(std::size_t bytes, const void* data, GLbitfield flags) {
-  GLuint id = 0;
-  glCreateBuffers(1, &id);
+  const GLuint id = createName(glCreateBuffers);
   glNamedBufferStorage(id, static_cast<GLsizeiptr>(bytes), data, flags);
   Buffer buffer(id, bytes);
   checkGlError("allocating a buffer");
@@ -146,11 +152,7 @@ Buffer Buffer::create(std::size_t bytes, const void* data, GLbitfield flags) {
 Framebuffer::Framebuffer(GLuint id)
     : GlObject(id, 0, [](GLuint name) { glDeleteFramebuffers(1, &name); }) {}
 
-Framebuffer Framebuffer::create() {
-  GLuint id = 0;
-  glCreateFramebuffers(1, &id);
-  return Framebuffer(id);
-}
+Framebuffer Framebuffer::create() { return Framebuffer(createName(glCreateFramebuffers)); }
 
 void Framebuffer::attachColor(int index, const Texture& texture, int level) const {
   glNamedFramebufferTexture(id(), GL_COLOR_ATTACHMENT0 + index, texture.id(), level);
@@ -179,15 +181,36 @@ void Framebuffer::finish(std::initializer_list<int> colorIndices) const {
 VertexArray::VertexArray(GLuint id)
     : GlObject(id, 0, [](GLuint name) { glDeleteVertexArrays(1, &name); }) {}
 
-VertexArray VertexArray::create() {
-  GLuint id = 0;
-  glCreateVertexArrays(1, &id);
-  return VertexArray(id);
+VertexArray VertexArray::create() { return VertexArray(createName(glCreateVertexArrays)); }
+
+void VertexArray::setVertexBuffer(const Buffer& buffer, GLsizei stride) const {
+  glVertexArrayVertexBuffer(id(), 0, buffer.id(), 0, stride);
+}
+
+void VertexArray::setFloatAttribute(GLuint index, GLint components, std::size_t offset) const {
+  glEnableVertexArrayAttrib(id(), index);
+  glVertexArrayAttribFormat(id(), index, components, GL_FLOAT, GL_FALSE, GLuint(offset));
+  glVertexArrayAttribBinding(id(), index, 0);
 }
 
 // --- Program ---------------------------------------------------------------------------
 
 namespace {
+
+// Throws GlError with the info log (and deletes `object`) unless `status` (compile or link
+// status) is true: the one check of glCompileShader and glLinkProgram.
+void checkBuilt(GLuint object, GLenum status, PFNGLGETSHADERIVPROC getiv, PFNGLGETSHADERINFOLOGPROC getLog,
+                PFNGLDELETESHADERPROC destroy, std::string_view what, const char* step) {
+  GLint ok = 0;
+  getiv(object, status, &ok);
+  if (ok) return;
+  GLint length = 0;
+  getiv(object, GL_INFO_LOG_LENGTH, &length);
+  std::string log(std::size_t(std::max(length, 1)), '\0');
+  getLog(object, length, nullptr, log.data());
+  destroy(object);
+  throw GlError(std::string(what) + ": " + step + " error:\n" + log);
+}
 
 // Compiles one stage and appends its full source to `sources` (for declaredUniforms).
 GLuint compileStage(GLenum stage, std::string_view key, std::string_view defines, std::string& sources) {
@@ -202,16 +225,7 @@ GLuint compileStage(GLenum stage, std::string_view key, std::string_view defines
   GLuint shader = glCreateShader(stage);
   glShaderSource(shader, 1, &text, nullptr);
   glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    GLint length = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-    std::string log(std::size_t(std::max(length, 1)), '\0');
-    glGetShaderInfoLog(shader, length, nullptr, log.data());
-    glDeleteShader(shader);
-    throw GlError(std::string(key) + ": compile error:\n" + log);
-  }
+  checkBuilt(shader, GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog, glDeleteShader, key, "compile");
   return shader;
 }
 
@@ -220,16 +234,7 @@ GLuint link(std::initializer_list<GLuint> shaders, std::string_view what) {
   for (GLuint shader : shaders) glAttachShader(program, shader);
   glLinkProgram(program);
   for (GLuint shader : shaders) glDeleteShader(shader);
-  GLint ok = 0;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    GLint length = 0;
-    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-    std::string log(std::size_t(std::max(length, 1)), '\0');
-    glGetProgramInfoLog(program, length, nullptr, log.data());
-    glDeleteProgram(program);
-    throw GlError(std::string(what) + ": link error:\n" + log);
-  }
+  checkBuilt(program, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog, glDeleteProgram, what, "link");
   return program;
 }
 

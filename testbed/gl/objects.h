@@ -1,6 +1,7 @@
 #pragma once
 // Move-only RAII owners of GL objects. Every allocation is booked in a GpuMemoryLedger so
 // a technique's memory footprint is measured from what it really allocates, never typed in.
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -121,6 +122,11 @@ class VertexArray : public GlObject {
  public:
   VertexArray() = default;
   static VertexArray create();
+  // Binding 0 reads `buffer`, one vertex every `stride` bytes.
+  void setVertexBuffer(const Buffer& buffer, GLsizei stride) const;
+  // Attribute `index` (binding 0): `components` floats at `offset` in the vertex, e.g.
+  // offsetof(Vertex, normal).
+  void setFloatAttribute(GLuint index, GLint components, std::size_t offset) const;
 
  private:
   explicit VertexArray(GLuint id);

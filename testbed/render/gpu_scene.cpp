@@ -38,17 +38,10 @@ GpuScene::GpuScene(const Scene& scene) {
   vertexCount_ = vertices.size();
   vertices_ = Buffer::create(vertices.size() * sizeof(Vertex), vertices.data());
   vertexArray_ = VertexArray::create();
-  const GLuint vao = vertexArray_.id();
-  glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(Vertex));
-  glEnableVertexArrayAttrib(vao, 0);
-  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, position));
-  glVertexArrayAttribBinding(vao, 0, 0);
-  glEnableVertexArrayAttrib(vao, 1);
-  glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, normal));
-  glVertexArrayAttribBinding(vao, 1, 0);
-  glEnableVertexArrayAttrib(vao, 2);
-  glVertexArrayAttribFormat(vao, 2, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, faceNormal));
-  glVertexArrayAttribBinding(vao, 2, 0);
+  vertexArray_.setVertexBuffer(vertices_, sizeof(Vertex));
+  vertexArray_.setFloatAttribute(0, 3, offsetof(Vertex, position));
+  vertexArray_.setFloatAttribute(1, 3, offsetof(Vertex, normal));
+  vertexArray_.setFloatAttribute(2, 3, offsetof(Vertex, faceNormal));
 }
 
 void GpuScene::draw() const {

@@ -4,7 +4,7 @@
 
 namespace testbed {
 
-void ShadowMapScreenTechnique::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
+void ShadowMapScreenBase::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
   if (!program_) program_ = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_);
   shadowMap_.render(in, timer);
   {

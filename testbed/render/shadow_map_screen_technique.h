@@ -1,27 +1,28 @@
 #pragma once
-// The shape of the simplest techniques (sm, pcf, the single-pass revectorization family):
-// the shared shadow map, then one timed full-screen pass running the technique's own
-// fragment shader with the receiver and shadow-map uniforms bound. A subclass names its
-// shader and pass, binds its parameters (handing the shadow map its part) and sets its
-// own uniforms; the passes, timing and bindings live here once.
+// The shape of the simplest techniques (sm, pcf, the plugin example): the shared shadow
+// map, then one timed full-screen pass running the technique's own fragment shader with
+// the receiver and shadow-map uniforms bound. A technique derives
+// ShadowMapScreenTechnique<P>, names its shader and pass and sets its own uniforms; the
+// passes, timing, bindings and the shadow map's parameters live here once.
 #include <string>
 #include <utility>
 
 #include "testbed/render/screen_pass.h"
 #include "testbed/render/shadow_map_pass.h"
 #include "testbed/technique/technique.h"
+#include "testbed/technique/with_parameters.h"
 
 namespace testbed {
 
-class ShadowMapScreenTechnique : public ShadowTechnique {
+// The passes, independent of the parameter struct (compiled once, in the testbed).
+class ShadowMapScreenBase : public ShadowTechnique {
  public:
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) final;
 
  protected:
   // `fragmentKey`: the embedded shader of the screen pass; `passName`: its timer scope.
-  explicit ShadowMapScreenTechnique(std::string fragmentKey, std::string passName = "visibility")
+  explicit ShadowMapScreenBase(std::string fragmentKey, std::string passName = "visibility")
       : fragmentKey_(std::move(fragmentKey)), passName_(std::move(passName)) {}
-  // From configure(): the ShadowMapPass::Parameters among the technique's.
   void configureShadowMap(const ShadowMapPass::Parameters& parameters) { shadowMap_.configure(parameters); }
   virtual void setUniforms(const Program& program) const = 0;
   // Runs after the timed passes, outside any timer scope (debug views).
@@ -32,6 +33,16 @@ class ShadowMapScreenTechnique : public ShadowTechnique {
   ShadowMapPass shadowMap_;
   ScreenPass screen_;
   Program program_;
+};
+
+// P: the technique's parameter struct, holding the shadow map's as `shadowMap`.
+template <class P>
+class ShadowMapScreenTechnique : public WithParameters<P, ShadowMapScreenBase> {
+ protected:
+  using WithParameters<P, ShadowMapScreenBase>::WithParameters;
+
+ private:
+  void configureShared() final { this->configureShadowMap(this->parameters_.shadowMap); }
 };
 
 }  // namespace testbed

@@ -3,8 +3,11 @@
 // It registers its techniques through the same interface as the in-tree ones:
 //
 //   #include "testbed/technique/plugin.h"
-//   class MyTechnique : public testbed::ShadowTechnique { ... static TechniqueInfo describe(); };
-//   TESTBED_PLUGIN(registrar) { registrar.add<MyTechnique>(); }
+//   class MyTechnique : public testbed::WithParameters<MyParameters> { ... };
+//   TESTBED_PLUGIN(registrar) {
+//     registrar.add<MyTechnique>({.id = "my-tech", .output = testbed::OutputKind::Hard,
+//                                 .citation = "Author, Title, Venue Year", .summary = "one line"});
+//   }
 //
 // The plugin is built against the testbed's headers only (cmake: testbed_add_plugin) and
 // links none of its objects: its undefined symbols (the registry, GL objects, the shader
@@ -22,7 +25,9 @@
 // Bumped whenever a change to technique.h, registry.h or the core classes a plugin may
 // derive from breaks plugins built against an older testbed: the loader refuses a plugin
 // built for another version instead of crashing in it.
-#define TESTBED_PLUGIN_API_VERSION 2  // 2: describe() and ParameterBinder replace info() and staticInfo()
+// 2: describe() and ParameterBinder replace info() and staticInfo(); 3: WithParameters
+// owns configure(), the registration takes the description and declares the parameters.
+#define TESTBED_PLUGIN_API_VERSION 3
 
 namespace testbed {
 
@@ -35,10 +40,11 @@ class PluginRegistrar {
     added_.push_back(RegisteredTechnique{&keepTechniqueInfo(std::move(info), family), std::move(factory)});
   }
 #ifdef TESTBED_TECHNIQUE_FAMILY  // defined by cmake's testbed_add_plugin: the plugin's folder
-  // For a class with `static TechniqueInfo describe()`, like TESTBED_REGISTER_TECHNIQUE.
+  // Like TESTBED_REGISTER_TECHNIQUE: `about` gives id, output, citation and summary; the
+  // parameters are Technique::Parameters' (describeTechnique, registry.h).
   template <class Technique>
-  void add() {
-    add(Technique::describe(), TESTBED_TECHNIQUE_FAMILY,
+  void add(TechniqueInfo about) {
+    add(describeTechnique<Technique>(std::move(about)), TESTBED_TECHNIQUE_FAMILY,
         [] { return std::unique_ptr<ShadowTechnique>(new Technique()); });
   }
 #endif
@@ -56,7 +62,7 @@ using testbed_plugin_api_version_fn = int();
 using testbed_register_plugin_fn = void(testbed::PluginRegistrar&);
 
 // Defines both entry points; the body that follows registers the techniques:
-//   TESTBED_PLUGIN(registrar) { registrar.add<A>(); registrar.add<B>(); }
+//   TESTBED_PLUGIN(registrar) { registrar.add<A>({.id = "a", ...}); registrar.add<B>({.id = "b", ...}); }
 #define TESTBED_PLUGIN(registrar)                                                         \
   TESTBED_PLUGIN_EXPORT int testbed_plugin_api_version() { return TESTBED_PLUGIN_API_VERSION; } \
   TESTBED_PLUGIN_EXPORT void testbed_register_plugin(::testbed::PluginRegistrar& registrar)

@@ -1,9 +1,11 @@
 #pragma once
 // Static self-registration of techniques: a technique's .cpp ends with
-//   TESTBED_REGISTER_TECHNIQUE(MyTechnique);
-// where MyTechnique has `static TechniqueInfo describe()`, every field but `family`: that
-// is the technique's folder, which cmake's testbed_add_technique (and testbed_add_plugin)
-// define as TESTBED_TECHNIQUE_FAMILY for the technique's sources.
+//   TESTBED_REGISTER_TECHNIQUE(MyTechnique, .id = "my-tech", .output = OutputKind::Hard,
+//                              .citation = "Author, Title, Venue Year", .summary = "one line");
+// The registration adds the rest of the TechniqueInfo: `parameters`, the specs that
+// MyTechnique::Parameters declares (with_parameters.h), and `family`, the technique's
+// folder, which cmake's testbed_add_technique (and testbed_add_plugin) define as
+// TESTBED_TECHNIQUE_FAMILY for the technique's sources.
 #include <memory>
 #include <string>
 #include <string_view>
@@ -30,6 +32,15 @@ std::string techniqueTableMarkdown();
 // Keeps `info` with its `family` for the process's lifetime (the registry and the
 // records point to it).
 const TechniqueInfo& keepTechniqueInfo(TechniqueInfo info, std::string_view family);
+
+// `about` completed with the specs of Technique::Parameters when it has one (a technique
+// without parameters, or a test's hand-made specs, keep `about.parameters`).
+template <class Technique>
+TechniqueInfo describeTechnique(TechniqueInfo about) {
+  if constexpr (requires { typename Technique::Parameters; })
+    about.parameters = declaredParameters<typename Technique::Parameters>();
+  return about;
+}
 
 struct TechniqueRegistration {
   TechniqueRegistration(TechniqueInfo info, std::string_view family, TechniqueFactory factory);
@@ -63,7 +74,8 @@ class StaticRegistrationCapture {
 
 }  // namespace testbed
 
-#define TESTBED_REGISTER_TECHNIQUE(Class)                                              \
-  static const ::testbed::TechniqueRegistration testbedRegistration_##Class{           \
-      Class::describe(), TESTBED_TECHNIQUE_FAMILY,                                       \
+// The arguments after the class: designated initializers of TechniqueInfo.
+#define TESTBED_REGISTER_TECHNIQUE(Class, ...)                                        \
+  static const ::testbed::TechniqueRegistration testbedRegistration_##Class{          \
+      ::testbed::describeTechnique<Class>({__VA_ARGS__}), TESTBED_TECHNIQUE_FAMILY,   \
       [] { return std::unique_ptr<::testbed::ShadowTechnique>(new Class()); }}

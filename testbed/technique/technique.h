@@ -26,8 +26,8 @@ class GBuffer;
 
 enum class OutputKind { Hard, Filtered };
 
-// A technique's describe() fills it with designated initializers; every member has an
-// initializer, so leaving one out (family; parameters when there are none) is fine.
+// A technique's registration (registry.h) gives id, output, citation and summary as
+// designated initializers and adds family and parameters; every member has an initializer.
 struct TechniqueInfo {
   std::string id{};        // CLI name: "sm", "smsr", "rpcf-rsmss"
   std::string family{};    // the technique's folder, "shadow_map": set at registration (registry.h)
@@ -58,8 +58,8 @@ struct VisibilityTarget {
 class ShadowTechnique {
  public:
   virtual ~ShadowTechnique() = default;
-  // Called once with the validated parameters, before the first render: typically
-  // bindParameters(parameters, parameters_) (parameter_binder.h), then derived state.
+  // Called once with the validated parameters, before the first render. Techniques with
+  // parameters derive WithParameters (with_parameters.h), which implements it.
   virtual void configure(const ParameterSet& parameters) = 0;
   // Renders one frame. Every GPU pass runs inside a `timer.scope("name")`. GL objects may
   // be (re)allocated here; their bytes are booked as this technique's memory.

@@ -16,22 +16,23 @@ using namespace testbed;
 // Never rendered: the loader rejects it before any frame.
 class Dummy final : public ShadowTechnique {
  public:
-  static TechniqueInfo describe() {
-    TechniqueInfo i;
-#if defined(BAD_DUPLICATE_ID)
-    i.id = "sm";  // taken by the in-tree technique
-#else
-    i.id = "bad-plugin";
-#endif
-#if defined(BAD_PARAMETER_SPEC)
-    // A spec filled by hand, bypassing ParameterBinder.
-    i.parameters = {ParameterSpec::integer("kernel", 4, 1, 3, "default outside its own range")};
-#endif
-    return i;
-  }
   void configure(const ParameterSet&) override {}
   void render(const FrameInputs&, PassTimer&, const VisibilityTarget&) override {}
 };
+
+TechniqueInfo dummyInfo() {
+  TechniqueInfo i;
+#if defined(BAD_DUPLICATE_ID)
+  i.id = "sm";  // taken by the in-tree technique
+#else
+  i.id = "bad-plugin";
+#endif
+#if defined(BAD_PARAMETER_SPEC)
+  // A spec filled by hand, bypassing ParameterBinder (Dummy has no Parameters to replace it).
+  i.parameters = {ParameterSpec::integer("kernel", 4, 1, 3, "default outside its own range")};
+#endif
+  return i;
+}
 
 }  // namespace
 
@@ -40,7 +41,7 @@ class Dummy final : public ShadowTechnique {
 extern "C" int bad_plugin_something_else() { return 0; }
 #elif defined(BAD_API_VERSION)
 TESTBED_PLUGIN_EXPORT int testbed_plugin_api_version() { return TESTBED_PLUGIN_API_VERSION + 100; }
-TESTBED_PLUGIN_EXPORT void testbed_register_plugin(PluginRegistrar& registrar) { registrar.add<Dummy>(); }
+TESTBED_PLUGIN_EXPORT void testbed_register_plugin(PluginRegistrar& registrar) { registrar.add<Dummy>(dummyInfo()); }
 #else
-TESTBED_PLUGIN(registrar) { registrar.add<Dummy>(); }
+TESTBED_PLUGIN(registrar) { registrar.add<Dummy>(dummyInfo()); }
 #endif

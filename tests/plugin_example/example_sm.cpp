@@ -8,39 +8,28 @@ namespace {
 
 using namespace testbed;
 
-class ExampleShadowMap final : public ShadowMapScreenTechnique {
+// Each parameter once: name, member, default, range, help; shared ones by their owner.
+struct ExampleParameters {
+  float bias;
+  ShadowMapPass::Parameters shadowMap;
+  void reflect(ParameterBinder& b) {
+    reflectShadowTestBias(b, bias);
+    shadowMap.reflect(b);
+  }
+};
+
+class ExampleShadowMap final : public ShadowMapScreenTechnique<ExampleParameters> {
  public:
-  // Each parameter once: name, member, default, range, help; shared ones by their owner.
-  struct Parameters {
-    float bias;
-    ShadowMapPass::Parameters shadowMap;
-    void reflect(ParameterBinder& b) {
-      reflectShadowTestBias(b, bias);
-      shadowMap.reflect(b);
-    }
-  };
-
   ExampleShadowMap() : ShadowMapScreenTechnique("tests/plugin_example/example_sm.frag") {}
-
-  // Every field but `family`, which is this folder's name (cmake: testbed_add_plugin).
-  static TechniqueInfo describe() {
-    return {.id = "example-sm",
-            .output = OutputKind::Hard,
-            .citation = "Williams, Casting curved shadows on curved surfaces, SIGGRAPH 1978",
-            .summary = "plugin example: plain shadow mapping loaded with --plugin",
-            .parameters = declaredParameters<Parameters>()};
-  }
-
-  void configure(const ParameterSet& values) override {
-    bindParameters(values, parameters_);
-    configureShadowMap(parameters_.shadowMap);
-  }
   void setUniforms(const Program& program) const override { program.set("uBias", parameters_.bias); }
-
- private:
-  Parameters parameters_{};
 };
 
 }  // namespace
 
-TESTBED_PLUGIN(registrar) { registrar.add<ExampleShadowMap>(); }
+// Every field but `family` (this folder's name, cmake: testbed_add_plugin) and
+// `parameters` (ExampleParameters').
+TESTBED_PLUGIN(registrar) {
+  registrar.add<ExampleShadowMap>({.id = "example-sm", .output = OutputKind::Hard,
+                                   .citation = "Williams, Casting curved shadows on curved surfaces, SIGGRAPH 1978",
+                                   .summary = "plugin example: plain shadow mapping loaded with --plugin"});
+}
