@@ -1,4 +1,7 @@
+#include <algorithm>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "testbed/harness/metric_table.h"
 #include "testbed/report/comparison.h"
@@ -9,6 +12,22 @@ namespace {
 std::string fixedMetric(const char* name, const Record& record, const Record* sm) {
   const Metric& m = metric(name);
   return formatFixed(m.value(record, sm), m.digits);
+}
+
+// One row of "Where the time goes": the technique's passes, longest first, each with its
+// share of the technique's time, so a reader sees which pass a speed ratio comes from.
+void passRow(std::ostringstream& md, const Record& r) {
+  std::vector<std::pair<std::string, double>> passes(r.timed().passesMs.begin(), r.timed().passesMs.end());
+  std::stable_sort(passes.begin(), passes.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+  const double total = r.timed().totalMs;
+  md << "| `" << r.technique << "` | " << formatFixed(total, 2) << " |";
+  const char* separator = " ";
+  for (const auto& [name, ms] : passes) {
+    md << separator << name << " " << formatFixed(ms, 2);
+    if (total > 0) md << " (" << formatFixed(100.0 * ms / total, 0) << " %)";
+    separator = " · ";
+  }
+  md << " |\n";
 }
 
 }  // namespace
@@ -45,7 +64,14 @@ std::string reportMarkdown(const Comparison& c) {
   md << "\nGround truth (`" << gt.technique << "`): " << fixedMetric("technique_ms", gt, &first) << " ms, "
      << fixedMetric("x_sm", gt, &first) << "× sm; the whole frame including the CPU silhouette "
      << "extraction and upload took " << fixedMetric("cpu_ms", gt, &first) << " ms.\n\n"
-     << "![grid](grid.png)\n\n![speed against error](speed_vs_error.svg)\n";
+     << "## Where the time goes\n\n"
+     << "Each technique's passes, longest first: " << (first.timing == TimingSource::Wall ? "wall" : "GPU")
+     << " ms (medians) and share of the technique's time. The G-buffer pass, shared by all, took "
+     << formatFixed(first.gbufferMs, 2) << " ms.\n\n"
+     << "| technique | ms | passes |\n|---|---:|---|\n";
+  for (const auto& entry : c.entries) passRow(md, entry.record);
+  passRow(md, gt);
+  md << "\n![grid](grid.png)\n\n![speed against error](speed_vs_error.svg)\n";
   return md.str();
 }
 

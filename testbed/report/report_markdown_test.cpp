@@ -49,5 +49,28 @@ TEST(ReportMarkdown, GivesTheTechniqueOnlyAndTheWholeFrameRatio) {
   EXPECT_NE(md.find("Ground truth (`groundtruth`): 30.00 ms, 3.00× sm;"), std::string::npos) << md;
 }
 
+TEST(ReportMarkdown, SaysWhereEachTechniquesTimeGoesLongestPassFirst) {
+  Comparison c;
+  c.scene = "test";
+  c.groundTruth = record("groundtruth", 30.0, 10.0);
+  c.groundTruth.wall.passesMs = {{"visibility", 6.0}, {"volumes", 24.0}};
+  Record sm = record("sm", 10.0, 10.0);
+  sm.wall.passesMs = {{"shadow-map", 2.5}, {"visibility", 7.5}};
+  Record smsr = record("smsr", 40.0, 10.0);
+  smsr.wall.passesMs = {{"classify", 30.0}, {"revectorize", 6.0}, {"shadow-map", 4.0}};
+  c.entries.push_back({sm, {}, {}, {}});
+  c.entries.push_back({smsr, {}, {}, {}});
+  const std::string md = reportMarkdown(c);
+  const auto section = md.find("## Where the time goes");
+  ASSERT_NE(section, std::string::npos) << md;
+  EXPECT_NE(md.find("The G-buffer pass, shared by all, took 10.00 ms.", section), std::string::npos) << md;
+  EXPECT_NE(md.find("| `sm` | 10.00 | visibility 7.50 (75 %) · shadow-map 2.50 (25 %) |", section), std::string::npos) << md;
+  EXPECT_NE(md.find("| `smsr` | 40.00 | classify 30.00 (75 %) · revectorize 6.00 (15 %) · shadow-map 4.00 (10 %) |", section),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| `groundtruth` | 30.00 | volumes 24.00 (80 %) · visibility 6.00 (20 %) |", section), std::string::npos)
+      << md;
+}
+
 }  // namespace
 }  // namespace testbed
