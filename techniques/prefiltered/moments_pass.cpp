@@ -1,7 +1,5 @@
 #include "techniques/prefiltered/moments_pass.h"
 
-#include <string>
-
 #include "testbed/render/gpu_scene.h"
 #include "testbed/technique/technique.h"
 
