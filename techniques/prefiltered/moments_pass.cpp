@@ -1,7 +1,5 @@
 #include "techniques/prefiltered/moments_pass.h"
 
-#include <string>
-
 #include "testbed/render/gpu_scene.h"
 #include "testbed/technique/technique.h"
 
@@ -55,20 +53,7 @@ void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsF
                        .colorLevels = parameters_.mips ? 0 : 1,
                        .depth = depthInternalFormat(in.depthFormat)}))
     moments_.color().setFilter(parameters_.mips ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
-  if (parameters_.blur > 1)
-    pingPong_.ensure({.size = size, .color = format.internalFormat});
-  else
-    pingPong_ = RenderTarget();
-  if (parameters_.blur > 1 && blurProgramRadius_ != parameters_.blur / 2) {
-    const auto blurProgram = [&](const char* step) {
-      const std::string defines =
-          "#define BLUR_RADIUS " + std::to_string(parameters_.blur / 2) + "\n#define BLUR_STEP " + step + "\n";
-      return Program::graphics("testbed/render/fullscreen.vert", "techniques/prefiltered/blur.frag", defines);
-    };
-    blurRows_ = blurProgram("ivec2(1, 0)");
-    blurColumns_ = blurProgram("ivec2(0, 1)");
-    blurProgramRadius_ = parameters_.blur / 2;
-  }
+  blur_.ensure(size, format.internalFormat, parameters_.blur > 1);
 
   {
     auto scope = timer.scope("moments");
@@ -96,17 +81,7 @@ void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsF
   // Always timed, so every configuration reports the same passes; with blur 1 and no mips
   // it is empty.
   auto scope = timer.scope("blur");
-  if (parameters_.blur > 1) {
-    const std::vector<float> weights = blurWeights(parameters_.blur);
-    for (const Program* program : {&blurRows_, &blurColumns_}) {
-      glProgramUniform1fv(program->id(), program->location("uWeights"), GLsizei(weights.size()), weights.data());
-      program->set("uSource", 0);
-    }
-    glBindTextureUnit(0, moments_.color().id());
-    screen_.draw(blurRows_, pingPong_.framebuffer(), size);
-    glBindTextureUnit(0, pingPong_.color().id());
-    screen_.draw(blurColumns_, moments_.framebuffer(), size);
-  }
+  if (parameters_.blur > 1) blur_.run(moments_.color(), moments_.framebuffer(), blurWeights(parameters_.blur));
   if (parameters_.mips) glGenerateTextureMipmap(moments_.color().id());
 }
 

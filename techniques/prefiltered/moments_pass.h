@@ -5,7 +5,8 @@
 //             the format's moments, with a depth attachment so each texel holds the nearest
 //             surface; cleared first to the moments of depth 1 (the far plane).
 //  "blur":    a separable Gaussian (horizontal then vertical, two draws through a ping-pong
-//             texture), then, with `mips`, the mip chain for trilinear lookups.
+//             texture: separable_blur.h), then, with `mips`, the mip chain for trilinear
+//             lookups.
 // Parameters `blur` (odd kernel size, 1 = none) and `mips` are declared here once; each
 // technique reflects them after its own.
 #include <vector>
@@ -13,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "techniques/prefiltered/moments_format.h"
+#include "techniques/prefiltered/separable_blur.h"
 #include "testbed/gl/objects.h"
 #include "testbed/gl/pass_timer.h"
 #include "testbed/gl/render_target.h"
@@ -47,9 +49,8 @@ class MomentsPass {
   Parameters parameters_{};
   MomentsFormat format_;
   RenderTarget moments_;   // the moments and the light's depth buffer
-  RenderTarget pingPong_;  // the blur's row pass, with blur > 1
-  Program encode_, clear_, blurRows_, blurColumns_;
-  int blurProgramRadius_ = 0;  // the radius blurRows_ and blurColumns_ were built for
+  SeparableBlur blur_;     // and its ping-pong target, with blur > 1
+  Program encode_, clear_;
   ScreenPass screen_;
 };
 

@@ -3,12 +3,16 @@
 // whose silhouettes are known.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "techniques/silhouette_map/silhouette_edges.h"
+#include "testbed/gl/depth_format.h"
 #include "testbed/gl/objects.h"
+#include "testbed/render/shadow_map_pass.h"
 #include "testbed/scene/primitives.h"
 #include "tests/gl_fixture.h"
 
@@ -97,6 +101,52 @@ TEST(SilhouetteMapGlsl, QuadrantsAreSkewedByTheFivePoints) {
   }
   const auto r = probe(1, data);
   for (std::size_t i = 0; i < cases.size(); ++i) EXPECT_EQ(int(r[i].x), cases[i].corner) << "case " << i;
+}
+
+// The corner tests by one textureGather (silhouette_corners.glsl, the visibility and point
+// passes' fast path) against four shadowTestTexel lookups, on a random depth map of each
+// depth format: every silhouette texel 0..N (the corners outside the map read the border),
+// receiver depths drawn around and exactly at the stored ones (the ties of <=), with and
+// without a bias.
+TEST(SilhouetteMapGlsl, GatheredCornerTestsEqualFourLookups) {
+  test::sharedContext();
+  constexpr int n = 16;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::vector<float> depths(n * n);
+  for (float& d : depths) d = unit(random);
+  const Program program = Program::compute("techniques/silhouette_map/silhouette_corners_probe.comp");
+  for (const DepthFormat format : {DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F}) {
+    Texture map = Texture::create2D(depthInternalFormat(format), n, n);
+    glTextureSubImage2D(map.id(), 0, 0, 0, n, n, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
+    map.setFilter(GL_NEAREST, GL_NEAREST);
+    map.setWrap(GL_CLAMP_TO_BORDER, glm::vec4(0.0f));  // as the shadow map pass sets it
+    const std::vector<float> stored = map.readFloats(1);
+    std::vector<glm::vec4> cases;
+    for (int y = 0; y <= n; ++y)
+      for (int x = 0; x <= n; ++x) {
+        const int near = std::clamp(y, 0, n - 1) * n + std::clamp(x, 0, n - 1);
+        for (const float depth : {stored[std::size_t(near)], unit(random), 0.0f, 1.0f})
+          for (const float bias : {0.0f, 0.01f}) cases.emplace_back(float(x), float(y), depth + bias * (x & 1), bias);
+      }
+    Buffer in = Buffer::create(cases.size() * sizeof(glm::vec4), cases.data());
+    Buffer out = Buffer::create(2 * cases.size() * sizeof(glm::vec4), nullptr);
+    program.use();
+    bindShadowMap(program, map);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
+    glDispatchCompute(static_cast<GLuint>(cases.size()), 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<glm::vec4> results(2 * cases.size());
+    glGetNamedBufferSubData(out.id(), 0, static_cast<GLsizeiptr>(results.size() * sizeof(glm::vec4)), results.data());
+    int lit = 0, differing = 0;
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      differing += results[2 * i] != results[2 * i + 1];
+      lit += results[2 * i + 1] != glm::vec4(0.0f) && results[2 * i + 1] != glm::vec4(1.0f);  // mixed corners
+    }
+    EXPECT_EQ(differing, 0) << depthFormatName(format);
+    EXPECT_GT(lit, int(cases.size() / 4)) << "the cases should mostly disagree between corners";
+  }
 }
 
 LightTransforms sun(glm::vec3 direction) {

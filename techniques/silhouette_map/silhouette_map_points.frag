@@ -3,7 +3,7 @@
 // the light does not see (behind all four corner depth samples), write the point as an
 // offset in [0,1]² of the texel. Later edges overwrite earlier ones, as in the paper.
 // Chan's notes: Eric Chan (MIT), "Shadow Silhouette Maps", course notes on Sen et al.'s maps.
-#include "testbed/glsl/shadow_test.glsl"
+#include "techniques/silhouette_map/silhouette_corners.glsl"
 #include "techniques/silhouette_map/silhouette_map.glsl"
 
 flat in vec3 vA;
@@ -16,8 +16,6 @@ void main() {
   vec3 origin = vec3(vec2(texel), 0.0);
   vec3 point;
   if (!silhouettePoint(vA - origin, vB - origin, point)) discard;
-  float seen = 0.0;
-  for (int c = 0; c < 4; ++c) seen += shadowTestTexel(texel - 1 + ivec2(c & 1, c >> 1), point.z, uOcclusionBias);
-  if (seen == 0.0) discard;
+  if (all(equal(cornerShadowTests(texel, point.z, uOcclusionBias), vec4(0.0)))) discard;
   outPoint = point.xy;
 }

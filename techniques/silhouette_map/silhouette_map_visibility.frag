@@ -6,7 +6,7 @@
 // answers where the corners agree, the silhouette pixels alone read the silhouette map.
 // Sen, Cammarano & Hanrahan, "Shadow Silhouette Maps", ACM TOG 22(3) (SIGGRAPH 2003).
 #include "testbed/glsl/receiver.glsl"
-#include "testbed/glsl/shadow_test.glsl"
+#include "techniques/silhouette_map/silhouette_corners.glsl"
 #include "techniques/silhouette_map/silhouette_map.glsl"
 
 uniform sampler2D uSilhouetteMap;  // RG: the point's offset in its texel, (N + 1)²
@@ -24,23 +24,24 @@ vec2 pointAt(ivec2 texel, ivec2 offset) {
 // The four depth tests at the corners of the receiver's silhouette texel (inside the
 // light's frustum: screen_pass.glsl answers outside). True where they agree and so decide
 // alone (v = that test).
-bool cornerTests(vec3 light, out float s[4], out ivec2 texel, out vec2 w, out float v) {
+bool cornerTests(vec3 light, out vec4 s, out ivec2 texel, out vec2 w, out float v) {
   w = light.xy * vec2(uShadowMapSize) + 0.5;
   texel = ivec2(floor(w));
-  for (int c = 0; c < 4; ++c) s[c] = shadowTestTexel(texel - 1 + ivec2(c & 1, c >> 1), light.z, uBias);
+  s = cornerShadowTests(texel, light.z, uBias);
   v = s[0];
-  return s[0] == s[1] && s[0] == s[2] && s[0] == s[3];
+  return all(equal(s, vec4(v)));
 }
 
 bool screenClassify(ivec2 pixel, Receiver r, vec3 light, out float v) {
-  float s[4];
+  vec4 s;
   ivec2 texel;
   vec2 w;
   return cornerTests(light, s, texel, w, v);
 }
 
 float screenVisibility(ivec2 pixel, Receiver r, vec3 light) {
-  float s[4], v;
+  vec4 s;
+  float v;
   ivec2 texel;
   vec2 w;
   if (cornerTests(light, s, texel, w, v)) return v;

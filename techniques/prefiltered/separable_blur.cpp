@@ -1,0 +1,47 @@
+#include "techniques/prefiltered/separable_blur.h"
+
+#include <string>
+
+namespace testbed {
+
+int SeparableBlur::pack(GLenum format) const {
+  if (!packed_) return 1;
+  return format == GL_R32F ? 4 : format == GL_RG32F ? 2 : 1;
+}
+
+void SeparableBlur::ensure(glm::ivec2 size, GLenum format, bool blurred) {
+  if (!blurred) {
+    scratch_ = RenderTarget();
+    return;
+  }
+  const int p = pack(format);
+  // Packed: the same bytes as the plain texture where the width is a multiple of the pack.
+  scratch_.ensure({.size = {(size.x + p - 1) / p, size.y}, .color = p > 1 ? GLenum(GL_RGBA32F) : format});
+}
+
+void SeparableBlur::run(const Texture& moments, const Framebuffer& target, const std::vector<float>& weights) {
+  const int radius = static_cast<int>(weights.size()) - 1;
+  const int p = pack(moments.internalFormat());
+  if (!rows_ || radius != radius_ || p != pack_) {
+    const auto program = [&](const char* step) {
+      return Program::graphics("testbed/render/fullscreen.vert", "techniques/prefiltered/blur.frag",
+                               "#define BLUR_RADIUS " + std::to_string(radius) + "\n#define BLUR_STEP " + step +
+                                   "\n#define BLUR_PACK " + std::to_string(p) + "\n");
+    };
+    rows_ = program("ivec2(1, 0)");
+    columns_ = program("ivec2(0, 1)");
+    radius_ = radius;
+    pack_ = p;
+  }
+  for (const Program* program : {&rows_, &columns_}) {
+    glProgramUniform1fv(program->id(), program->location("uWeights"), GLsizei(weights.size()), weights.data());
+    program->set("uSource", 0);
+  }
+  const glm::ivec2 size(moments.width(), moments.height());
+  glBindTextureUnit(0, moments.id());
+  screen_.draw(rows_, scratch_.framebuffer(), {scratch_.color().width(), size.y});
+  glBindTextureUnit(0, scratch_.color().id());
+  screen_.draw(columns_, target, size);
+}
+
+}  // namespace testbed

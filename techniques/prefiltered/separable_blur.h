@@ -1,0 +1,40 @@
+#pragma once
+// The moments pass's separable Gaussian (blur.frag): rows from the moments into a scratch
+// target, then columns back into the moments' framebuffer. For R32F and RG32F moments the
+// scratch target packs 4 or 2 row neighbours per RGBA32F texel (blur.frag's BLUR_PACK),
+// which cuts the row pass's fragments and fetches by about that factor and gives the same
+// result bit for bit as the plain scratch texture of the moments' own format
+// (blur_test.cpp compares the two); the other formats have no room to pack.
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "testbed/gl/objects.h"
+#include "testbed/gl/render_target.h"
+#include "testbed/render/screen_pass.h"
+
+namespace testbed {
+
+class SeparableBlur {
+ public:
+  // `packed` false: the straightforward scratch texture (blur_test.cpp's reference).
+  explicit SeparableBlur(bool packed = true) : packed_(packed) {}
+
+  // Allocates the scratch target for moments of `size` and `format`, or frees it with
+  // `blurred` false; booked in the ledger current, as the moments are.
+  void ensure(glm::ivec2 size, GLenum format, bool blurred);
+  // Blurs `moments` (level 0, drawn into through `target`) in place with the weights by
+  // |offset| (MomentsPass::blurWeights: weights.size() − 1 is the radius, at least 1).
+  void run(const Texture& moments, const Framebuffer& target, const std::vector<float>& weights);
+
+ private:
+  int pack(GLenum format) const;
+
+  bool packed_;
+  RenderTarget scratch_;
+  Program rows_, columns_;
+  int radius_ = 0, pack_ = 0;  // what rows_ and columns_ were built for
+  ScreenPass screen_;
+};
+
+}  // namespace testbed
