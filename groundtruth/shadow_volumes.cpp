@@ -1,5 +1,6 @@
 #include "groundtruth/shadow_volumes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -46,20 +47,9 @@ std::vector<VolumeLight> lightSamples(const LightDesc& desc, const LightTransfor
   return samples;
 }
 
-float sceneExtent(const Scene& scene) {
-  glm::vec3 lo(INFINITY), hi(-INFINITY);
-  for (const auto& object : scene.objects)
-    for (const auto v : object.mesh.vertices()) {
-      const auto& p = object.mesh.point(v);
-      lo = glm::min(lo, glm::vec3(p[0], p[1], p[2]));
-      hi = glm::max(hi, glm::vec3(p[0], p[1], p[2]));
-    }
-  return glm::length(hi - lo);
-}
-
 class ShadowVolumes final : public ShadowTechnique {
  public:
-  explicit ShadowVolumes(bool area) : area_(area) {}
+  explicit ShadowVolumes(bool area, bool depthFailOnly = false) : area_(area), depthFailOnly_(depthFailOnly) {}
 
   // The area-light reference's one parameter (the point-light one has none).
   struct AreaParameters {
@@ -72,7 +62,7 @@ class ShadowVolumes final : public ShadowTechnique {
   static TechniqueInfo describePoint() {
     return {.id = "groundtruth",
             .output = OutputKind::Hard,
-            .citation = "Crow 1977; depth-fail counting: Everitt & Kilgard 2002",
+            .citation = "Crow 1977; depth-pass counting: Heidmann 1991; depth-fail: Everitt & Kilgard 2002",
             .summary = "exact hard shadows: stencil shadow volumes from OpenMesh silhouettes"};
   }
   static TechniqueInfo describeArea() {
@@ -100,10 +90,11 @@ class ShadowVolumes final : public ShadowTechnique {
       if (lights.size() >= 16 && (s % (lights.size() / 8) == 0 || s + 1 == lights.size()))
         std::cerr << "\r  area-light sample " << s + 1 << "/" << lights.size() << (s + 1 == lights.size() ? "\n" : "")
                   << std::flush;
-      const GLsizei vertexCount = upload(in.scene, lights[s]);
+      const bool depthPass = eyeOutsideEveryVolume(in.scene, lights[s], camera) && !depthFailOnly_;
+      const GLsizei vertexCount = upload(lights[s], depthPass ? depthPassReach(lights[s], camera) : VolumeReach{});
       {
         auto scope = timer.scope("volumes");
-        countVolumes(in, camera, vertexCount);
+        countVolumes(in, camera, vertexCount, depthPass);
       }
       auto scope = timer.scope("visibility");
       resolve(in, lights[s], 1.0f / float(lights.size()));
@@ -124,15 +115,52 @@ class ShadowVolumes final : public ShadowTechnique {
     target_.ensure({.size = in.size, .depth = GL_DEPTH24_STENCIL8, .borrowedColor = &out.texture});
   }
 
-  // Builds the volumes of every object for one light sample and uploads them.
-  GLsizei upload(const Scene& scene, const VolumeLight& light) {
-    if (topologyOf_ != &scene) {  // adjacency is gathered once per scene
-      topologies_.clear();
-      for (const auto& object : scene.objects) topologies_.push_back(meshTopology(object.mesh));
-      topologyOf_ = &scene;
+  // The light-independent part, gathered once per scene: adjacency, face normals, bounds.
+  void gather(const Scene& scene) {
+    if (meshesOf_ == &scene) return;
+    meshes_.clear();
+    for (const auto& object : scene.objects) meshes_.push_back(volumeMesh(meshTopology(object.mesh)));
+    lo_ = glm::vec3(INFINITY);
+    hi_ = glm::vec3(-INFINITY);
+    for (const auto& object : scene.objects)
+      for (const auto v : object.mesh.vertices()) {
+        const auto& p = object.mesh.point(v);
+        lo_ = glm::min(lo_, glm::vec3(p[0], p[1], p[2]));
+        hi_ = glm::max(hi_, glm::vec3(p[0], p[1], p[2]));
+      }
+    meshesOf_ = &scene;
+  }
+  float sceneExtent() const { return glm::length(hi_ - lo_); }
+
+  // Depth-pass counting is exact when the eye lies in no volume (then a receiver's count is
+  // the number of volume faces entered minus left between the eye and the receiver); the
+  // eye is in a volume exactly when its way to the light crosses an occluder's triangle.
+  // Decided for every light (sample) and frame, as a real-time renderer would.
+  bool eyeOutsideEveryVolume(const Scene& scene, const VolumeLight& light, const glm::vec3& eye) {
+    gather(scene);
+    const float reach = glm::length(glm::max(glm::abs(eye - lo_), glm::abs(eye - hi_))) + 1.0f;
+    for (const auto& mesh : meshes_)
+      if (eyeMayBeInVolume(mesh, light, eye, reach)) return false;
+    return true;
+  }
+
+  // Depth-pass meets no volume face beyond the eye and the receivers, which lie in the
+  // scene's bounds: the sides end on a plane past both, across the light's axis.
+  VolumeReach depthPassReach(const VolumeLight& light, const glm::vec3& eye) const {
+    VolumeReach reach{.caps = false, .bounded = true, .farNormal = light.direction};
+    reach.farOffset = glm::dot(reach.farNormal, eye);
+    for (int k = 0; k < 8; ++k) {
+      const glm::vec3 corner((k & 1) ? hi_.x : lo_.x, (k & 2) ? hi_.y : lo_.y, (k & 4) ? hi_.z : lo_.z);
+      reach.farOffset = std::max(reach.farOffset, glm::dot(reach.farNormal, corner));
     }
+    reach.farOffset += 0.01f * sceneExtent() + 1e-3f;  // G-buffer positions round off the bounds
+    return reach;
+  }
+
+  // Builds the volumes of every object for one light sample and uploads them.
+  GLsizei upload(const VolumeLight& light, const VolumeReach& reach) {
     vertices_.clear();
-    for (const auto& topology : topologies_) appendShadowVolume(topology, light, vertices_);
+    for (const auto& mesh : meshes_) appendShadowVolume(mesh, light, vertices_, reach);
     const std::size_t bytes = vertices_.size() * sizeof(VolumeVertex);
     if (bytes > buffer_.bytes()) {
       buffer_ = Buffer::create(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -145,7 +173,7 @@ class ShadowVolumes final : public ShadowTechnique {
     return GLsizei(vertices_.size());
   }
 
-  void countVolumes(const FrameInputs& in, const glm::vec3& camera, GLsizei vertexCount) {
+  void countVolumes(const FrameInputs& in, const glm::vec3& camera, GLsizei vertexCount, bool depthPass) {
     glBindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer().id());
     glViewport(0, 0, in.size.x, in.size.y);
     glClearNamedFramebufferfi(target_.framebuffer().id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
@@ -157,14 +185,17 @@ class ShadowVolumes final : public ShadowTechnique {
     glEnable(GL_STENCIL_TEST);
     glStencilMask(0xFF);
     glStencilFunc(GL_ALWAYS, 0, 0xFF);
-    // Faces behind the receiver: leaving a volume (back face) +1, entering (front) −1.
-    glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
-    glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+    // Depth-fail: faces behind the receiver, leaving a volume (back face) +1, entering
+    // (front) −1. Depth-pass: faces in front of it, entering +1, leaving −1. Either sum is
+    // the number of volumes holding the receiver (depth-pass: when none holds the eye).
+    glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, depthPass ? GL_DECR_WRAP : GL_INCR_WRAP);
+    glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, depthPass ? GL_INCR_WRAP : GL_DECR_WRAP);
     countProgram_.use();
     bindReceiverInputs(countProgram_, in);
     countProgram_.set("uViewProjection", in.camera.viewProjection());
     countProgram_.set("uCameraPosition", camera);
-    countProgram_.set("uTieTolerance", 1e-5f * sceneExtent(in.scene));
+    countProgram_.set("uTieTolerance", 1e-5f * sceneExtent());
+    countProgram_.set("uDepthPass", depthPass ? 1 : 0);
     glBindVertexArray(vertexArray_.id());
     if (vertexCount > 0) glDrawArrays(GL_TRIANGLES, 0, vertexCount);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -184,18 +215,25 @@ class ShadowVolumes final : public ShadowTechnique {
     glDisable(GL_BLEND);
   }
 
-  bool area_;
+  bool area_, depthFailOnly_;
   int samples_ = 0;
   Program countProgram_, resolveProgram_;
   VertexArray vertexArray_;
   Buffer buffer_;
   RenderTarget target_;
   std::vector<VolumeVertex> vertices_;
-  std::vector<MeshTopology> topologies_;
-  const Scene* topologyOf_ = nullptr;
+  std::vector<VolumeMesh> meshes_;
+  glm::vec3 lo_{0}, hi_{0};  // the scene's bounds
+  const Scene* meshesOf_ = nullptr;
 };
 
 }  // namespace
+
+const RegisteredTechnique& depthFailGroundTruth() {
+  static const RegisteredTechnique entry{&keepTechniqueInfo(ShadowVolumes::describePoint(), TESTBED_TECHNIQUE_FAMILY),
+                                         [] { return std::make_unique<ShadowVolumes>(false, true); }};
+  return entry;
+}
 
 const RegisteredTechnique& shadowVolumeGroundTruth() {
   static const RegisteredTechnique entry{&keepTechniqueInfo(ShadowVolumes::describePoint(), TESTBED_TECHNIQUE_FAMILY),

@@ -1,5 +1,7 @@
 #include "groundtruth/volume_geometry.h"
 
+#include <algorithm>
+
 namespace testbed {
 namespace {
 
@@ -12,30 +14,92 @@ glm::vec4 planeThrough(const glm::vec3& normal, const glm::vec3& point) {
 
 enum Facing : signed char { kNone = 0, kTowards = 1, kAway = -1 };
 
-}  // namespace
-
-VolumeStats appendShadowVolume(const TriMesh& mesh, const VolumeLight& light, std::vector<VolumeVertex>& out) {
-  return appendShadowVolume(meshTopology(mesh), light, out);
+// A point light's sides end on the far plane only if the whole mesh lies in front of the
+// light along the plane's normal, with room to spare (the far ends stay within 100× the
+// plane's distance): then every side meets the plane once and every point of the mesh's
+// box lies before it.
+bool farPlaneCutsEverySide(const VolumeMesh& mesh, const VolumeLight& light, const VolumeReach& reach) {
+  if (!reach.bounded) return false;
+  const float planeDistance = reach.farOffset - glm::dot(reach.farNormal, light.directional ? glm::vec3(0) : light.position);
+  for (int k = 0; k < 8; ++k) {
+    const glm::vec3 corner((k & 1) ? mesh.hi.x : mesh.lo.x, (k & 2) ? mesh.hi.y : mesh.lo.y, (k & 4) ? mesh.hi.z : mesh.lo.z);
+    const float along = glm::dot(reach.farNormal, corner);
+    if (!(along < reach.farOffset)) return false;
+    if (!light.directional && !(along - glm::dot(reach.farNormal, light.position) > 0.01f * planeDistance)) return false;
+  }
+  return true;
 }
 
-VolumeStats appendShadowVolume(const MeshTopology& mesh, const VolumeLight& light, std::vector<VolumeVertex>& out) {
+// Möller & Trumbore's segment–triangle test in double precision, widened by `margin` in the
+// barycentric coordinates and the segment parameter so that grazing hits count.
+bool segmentMeetsTriangle(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec3& a, const glm::dvec3& b,
+                          const glm::dvec3& c, double margin) {
+  const glm::dvec3 direction = to - from, e1 = b - a, e2 = c - a;
+  const glm::dvec3 p = glm::cross(direction, e2);
+  const double det = glm::dot(e1, p);
+  if (det == 0.0) return false;  // parallel to the plane (or degenerate): no crossing point
+  const glm::dvec3 s = from - a;
+  const double u = glm::dot(s, p) / det;
+  if (u < -margin || u > 1.0 + margin) return false;
+  const glm::dvec3 q = glm::cross(s, e1);
+  const double v = glm::dot(direction, q) / det;
+  if (v < -margin || u + v > 1.0 + margin) return false;
+  const double t = glm::dot(e2, q) / det;
+  return t >= -margin && t <= 1.0 + margin;
+}
+
+}  // namespace
+
+VolumeMesh volumeMesh(MeshTopology topology) {
+  VolumeMesh mesh;
+  const std::size_t faces = topology.corners.size() / 3;
+  mesh.normal.reserve(faces);
+  mesh.centroid.reserve(faces);
+  for (std::size_t f = 0; f < faces; ++f) {
+    const glm::vec3 &a = topology.corners[3 * f], &b = topology.corners[3 * f + 1], &c = topology.corners[3 * f + 2];
+    mesh.normal.push_back(glm::cross(b - a, c - a));
+    mesh.centroid.push_back((a + b + c) / 3.0f);
+  }
+  if (!topology.corners.empty()) mesh.lo = mesh.hi = topology.corners.front();
+  for (const glm::vec3& p : topology.corners) {
+    mesh.lo = glm::min(mesh.lo, p);
+    mesh.hi = glm::max(mesh.hi, p);
+  }
+  mesh.topology = std::move(topology);
+  return mesh;
+}
+
+VolumeStats appendShadowVolume(const TriMesh& mesh, const VolumeLight& light, std::vector<VolumeVertex>& out,
+                               const VolumeReach& reach) {
+  return appendShadowVolume(volumeMesh(meshTopology(mesh)), light, out, reach);
+}
+
+VolumeStats appendShadowVolume(const VolumeMesh& volumeMesh, const VolumeLight& light, std::vector<VolumeVertex>& out,
+                               const VolumeReach& reach) {
+  const MeshTopology& mesh = volumeMesh.topology;
   VolumeStats stats;
   (mesh.closed ? stats.closedMeshes : stats.openMeshes) = 1;
+  stats.bounded = farPlaneCutsEverySide(volumeMesh, light, reach);
   const std::size_t faces = mesh.corners.size() / 3;
 
   // Facing of each face, from its corners (not stored normals) so orientation is exact.
   std::vector<Facing> facing(faces, kNone);
   for (std::size_t f = 0; f < faces; ++f) {
-    const glm::vec3 &a = mesh.corners[3 * f], &b = mesh.corners[3 * f + 1], &c = mesh.corners[3 * f + 2];
-    const glm::vec3 normal = glm::cross(b - a, c - a);
+    const glm::vec3& normal = volumeMesh.normal[f];
     if (normal == glm::vec3(0)) continue;
-    const glm::vec3 towardsLight = light.directional ? -light.direction : light.position - (a + b + c) / 3.0f;
+    const glm::vec3 towardsLight = light.directional ? -light.direction : light.position - volumeMesh.centroid[f];
     facing[f] = glm::dot(normal, towardsLight) > 0 ? kTowards : kAway;  // edge-on faces block nothing
   }
 
-  // A point extruded away from the light to infinity.
+  // A point extruded away from the light to infinity, or to the far plane when bounded.
   auto atInfinity = [&](const glm::vec3& p) {
     return light.directional ? glm::vec4(light.direction, 0) : glm::vec4(p - light.position, 0);
+  };
+  auto farEnd = [&](const glm::vec3& p) {
+    if (!stats.bounded) return atInfinity(p);
+    const glm::vec3 away = light.directional ? light.direction : p - light.position;
+    const float along = (reach.farOffset - glm::dot(reach.farNormal, p)) / glm::dot(reach.farNormal, away);
+    return glm::vec4(p + along * away, 1);
   };
   auto emit = [&](const glm::vec4& p, const glm::vec4& q, const glm::vec4& r, const glm::vec4& plane,
                   float lightCap = 0.0f) {
@@ -47,15 +111,17 @@ VolumeStats appendShadowVolume(const MeshTopology& mesh, const VolumeLight& ligh
   for (std::size_t f = 0; f < faces; ++f) {
     const Facing facingHere = facing[f];
     if (facingHere == kNone || (mesh.closed && facingHere == kAway)) continue;
-    // Corners ordered so the triangle is counter-clockwise seen from the light.
-    glm::vec3 corner[3] = {mesh.corners[3 * f], mesh.corners[3 * f + 1], mesh.corners[3 * f + 2]};
-    if (facingHere == kAway) std::swap(corner[1], corner[2]);
-    const glm::vec4 capPlane = planeThrough(glm::cross(corner[1] - corner[0], corner[2] - corner[0]), corner[0]);
-    emit(glm::vec4(corner[0], 1), glm::vec4(corner[1], 1), glm::vec4(corner[2], 1), capPlane, 1.0f);
-    ++stats.capTriangles;
-    if (!light.directional) {  // a directional dark cap collapses to one point at infinity
-      emit(atInfinity(corner[0]), atInfinity(corner[2]), atInfinity(corner[1]), glm::vec4(0, 0, 0, 1));
+    if (reach.caps) {
+      // Corners ordered so the triangle is counter-clockwise seen from the light.
+      glm::vec3 corner[3] = {mesh.corners[3 * f], mesh.corners[3 * f + 1], mesh.corners[3 * f + 2]};
+      if (facingHere == kAway) std::swap(corner[1], corner[2]);
+      const glm::vec4 capPlane = planeThrough(glm::cross(corner[1] - corner[0], corner[2] - corner[0]), corner[0]);
+      emit(glm::vec4(corner[0], 1), glm::vec4(corner[1], 1), glm::vec4(corner[2], 1), capPlane, 1.0f);
       ++stats.capTriangles;
+      if (!light.directional) {  // a directional dark cap collapses to one point at infinity
+        emit(atInfinity(corner[0]), atInfinity(corner[2]), atInfinity(corner[1]), glm::vec4(0, 0, 0, 1));
+        ++stats.capTriangles;
+      }
     }
     // Side quads on the region's boundary: the neighbour is missing or faces otherwise.
     for (int i = 0; i < 3; ++i) {
@@ -66,13 +132,24 @@ VolumeStats appendShadowVolume(const MeshTopology& mesh, const VolumeLight& ligh
       if (facingHere == kAway) std::swap(a, b);
       const glm::vec3 away = light.directional ? light.direction : a - light.position;
       const glm::vec4 plane = planeThrough(glm::cross(a - b, away), a);
-      const glm::vec4 a4(a, 1), b4(b, 1), aInf = atInfinity(a), bInf = atInfinity(b);
-      emit(b4, a4, aInf, plane);
-      emit(b4, aInf, bInf, plane);
+      const glm::vec4 a4(a, 1), b4(b, 1), aFar = farEnd(a), bFar = farEnd(b);
+      emit(b4, a4, aFar, plane);
+      emit(b4, aFar, bFar, plane);
       ++stats.sideQuads;
     }
   }
   return stats;
+}
+
+bool eyeMayBeInVolume(const VolumeMesh& mesh, const VolumeLight& light, const glm::vec3& eye, float reach) {
+  const glm::dvec3 from(eye);
+  const glm::dvec3 to = light.directional ? from - double(reach) * glm::dvec3(light.direction) : glm::dvec3(light.position);
+  const auto& corners = mesh.topology.corners;
+  for (std::size_t f = 0; f < mesh.normal.size(); ++f) {
+    if (mesh.normal[f] == glm::vec3(0)) continue;  // degenerate: no volume
+    if (segmentMeetsTriangle(from, to, corners[3 * f], corners[3 * f + 1], corners[3 * f + 2], 1e-4)) return true;
+  }
+  return false;
 }
 
 }  // namespace testbed

@@ -1,6 +1,6 @@
 #pragma once
-// Shadow-volume geometry for depth-fail stencil counting, built on the CPU from OpenMesh
-// adjacency for one point (spot) or direction (directional) light.
+// Shadow-volume geometry for stencil counting, built on the CPU from OpenMesh adjacency for
+// one point (spot) or direction (directional) light.
 //
 // Exactness on any topology: every triangle is oriented towards the light and grouped into
 // regions of equally-facing neighbours; each region is closed into a volume by its own
@@ -23,7 +23,33 @@ namespace testbed {
 struct VolumeLight {
   bool directional = false;
   glm::vec3 position{0};   // point light
-  glm::vec3 direction{0};  // directional: the way light travels (unit)
+  glm::vec3 direction{0};  // directional: the way light travels (unit); point: the spot's axis
+};
+
+// The light-independent part of a mesh's volumes, gathered once per mesh: its adjacency and,
+// per face, the two vectors the facing test needs, computed as that test would (so a light
+// costs one dot product per face).
+struct VolumeMesh {
+  MeshTopology topology;
+  std::vector<glm::vec3> normal;    // cross(b − a, c − a): unnormalised, zero when degenerate
+  std::vector<glm::vec3> centroid;  // (a + b + c) / 3
+  glm::vec3 lo{0}, hi{0};           // bounds of the corners
+};
+VolumeMesh volumeMesh(MeshTopology topology);
+
+// Which parts of the volumes are built. Depth-fail counting (Everitt & Kilgard 2002, the
+// default) counts the faces behind the receiver and needs closed volumes: caps, and sides
+// that reach infinity. Depth-pass counting (Crow 1977; Heidmann 1991) counts the faces
+// between the eye and the receiver and meets neither cap there: a light cap is the
+// occluder's own surface, which the G-buffer shows in front of anything it hides, and a
+// dark cap lies at infinity. It also never meets a side beyond the plane
+// dot(farNormal, p) = farOffset when the eye and every receiver lie before it: `bounded`
+// ends the sides on that plane instead, so the fill they cost stays within the scene.
+struct VolumeReach {
+  bool caps = true;
+  bool bounded = false;
+  glm::vec3 farNormal{0};  // unit; the light's axis or direction
+  float farOffset = 0;
 };
 
 // One vertex of the volume's triangle list. `plane` is the (unit normal, offset) plane of
@@ -39,11 +65,23 @@ struct VolumeVertex {
 
 struct VolumeStats {
   std::size_t capTriangles = 0, sideQuads = 0, closedMeshes = 0, openMeshes = 0;
+  bool bounded = false;  // the sides end on the far plane (else at infinity)
 };
 
 // Appends the volume triangles of a mesh (world space) to `out`, every triangle wound
-// counter-clockwise seen from outside its volume.
-VolumeStats appendShadowVolume(const MeshTopology& mesh, const VolumeLight& light, std::vector<VolumeVertex>& out);
-VolumeStats appendShadowVolume(const TriMesh& mesh, const VolumeLight& light, std::vector<VolumeVertex>& out);
+// counter-clockwise seen from outside its volume. A bounded reach falls back to infinite
+// sides for a point light that does not see the whole mesh in front of it (the far plane
+// would not cut every side).
+VolumeStats appendShadowVolume(const VolumeMesh& mesh, const VolumeLight& light, std::vector<VolumeVertex>& out,
+                               const VolumeReach& reach = {});
+VolumeStats appendShadowVolume(const TriMesh& mesh, const VolumeLight& light, std::vector<VolumeVertex>& out,
+                               const VolumeReach& reach = {});
+
+// False only when the eye is certainly outside every volume of the mesh: the segment from
+// the eye towards the light (a point light's position, or away from a directional light's
+// travel up to `reach` beyond the eye) misses every non-degenerate triangle by a margin.
+// A volume holds exactly the points whose way to the light crosses one of its triangles;
+// grazing hits count as hits, so ties choose depth-fail, which is exact wherever the eye is.
+bool eyeMayBeInVolume(const VolumeMesh& mesh, const VolumeLight& light, const glm::vec3& eye, float reach);
 
 }  // namespace testbed
