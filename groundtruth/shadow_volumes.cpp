@@ -1,6 +1,7 @@
 #include "groundtruth/shadow_volumes.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iostream>
 
@@ -80,7 +81,7 @@ class ShadowVolumes final : public ShadowTechnique {
   }
 
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {
-    prepare(in, out);
+    prepare(in);
     const float zero = 0.0f;
     glClearTexImage(out.texture.id(), 0, GL_RED, GL_FLOAT, &zero);
     const auto lights = lightSamples(in.scene.light, in.light, samples_);
@@ -91,28 +92,28 @@ class ShadowVolumes final : public ShadowTechnique {
         std::cerr << "\r  area-light sample " << s + 1 << "/" << lights.size() << (s + 1 == lights.size() ? "\n" : "")
                   << std::flush;
       const bool depthPass = eyeOutsideEveryVolume(in.scene, lights[s], camera) && !depthFailOnly_;
-      const GLsizei vertexCount = upload(lights[s], depthPass ? depthPassReach(lights[s], camera) : VolumeReach{});
+      const GLsizei vertexCount = upload(lights[s], depthPass, depthPassBounds(camera));
       {
         auto scope = timer.scope("volumes");
         countVolumes(in, camera, vertexCount, depthPass);
       }
       auto scope = timer.scope("visibility");
-      resolve(in, lights[s], 1.0f / float(lights.size()));
+      resolve(in, out, lights[s], 1.0f / float(lights.size()));
     }
-    glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_CLAMP);
   }
 
  private:
-  void prepare(const FrameInputs& in, const VisibilityTarget& out) {
+  void prepare(const FrameInputs& in) {
     if (!countProgram_) {
       countProgram_ = Program::graphics("groundtruth/shadow_volume.vert", "groundtruth/shadow_volume.frag");
       resolveProgram_ = Program::graphics("testbed/render/fullscreen.vert", "groundtruth/volume_visibility.frag");
       vertexArray_ = VertexArray::create();
     }
-    // The visibility target, and a stencil buffer for the volume counts.
-    target_.ensure({.size = in.size, .depth = GL_DEPTH24_STENCIL8, .borrowedColor = &out.texture});
+    // The volume counts (small integers, exact in half floats), tested against the
+    // G-buffer's depth.
+    count_.ensure({.size = in.size, .color = GL_R16F, .borrowedDepth = &in.gbuffer.depth()});
   }
 
   // The light-independent part, gathered once per scene: adjacency, face normals, bounds.
@@ -145,22 +146,17 @@ class ShadowVolumes final : public ShadowTechnique {
   }
 
   // Depth-pass meets no volume face beyond the eye and the receivers, which lie in the
-  // scene's bounds: the sides end on a plane past both, across the light's axis.
-  VolumeReach depthPassReach(const VolumeLight& light, const glm::vec3& eye) const {
-    VolumeReach reach{.caps = false, .bounded = true, .farNormal = light.direction};
-    reach.farOffset = glm::dot(reach.farNormal, eye);
-    for (int k = 0; k < 8; ++k) {
-      const glm::vec3 corner((k & 1) ? hi_.x : lo_.x, (k & 2) ? hi_.y : lo_.y, (k & 4) ? hi_.z : lo_.z);
-      reach.farOffset = std::max(reach.farOffset, glm::dot(reach.farNormal, corner));
-    }
-    reach.farOffset += 0.01f * sceneExtent() + 1e-3f;  // G-buffer positions round off the bounds
-    return reach;
+  // scene's bounds: each mesh's sides end on a plane past both.
+  std::pair<glm::vec3, glm::vec3> depthPassBounds(const glm::vec3& eye) const {
+    const glm::vec3 margin(1e-3f * sceneExtent() + 1e-3f);  // G-buffer positions round off the bounds
+    return {glm::min(lo_, eye) - margin, glm::max(hi_, eye) + margin};
   }
 
   // Builds the volumes of every object for one light sample and uploads them.
-  GLsizei upload(const VolumeLight& light, const VolumeReach& reach) {
+  GLsizei upload(const VolumeLight& light, bool depthPass, const std::pair<glm::vec3, glm::vec3>& bounds) {
     vertices_.clear();
-    for (const auto& mesh : meshes_) appendShadowVolume(mesh, light, vertices_, reach);
+    for (const auto& mesh : meshes_) {
+      const VolumeReach reach = depthPass ? depthPassReach(mesh, light, bounds.first, bounds.second) : VolumeReach{}; auto st = appendShadowVolume(mesh, light, vertices_, reach); if (getenv("GT_DEBUG")) std::cerr << "DBG faces " << mesh.normal.size() << " caps " << st.capTriangles << " sides " << st.sideQuads << " bounded " << st.bounded << " closed " << st.closedMeshes << " n " << reach.farNormal.x << "," << reach.farNormal.y << "," << reach.farNormal.z << "\n"; }
     const std::size_t bytes = vertices_.size() * sizeof(VolumeVertex);
     if (bytes > buffer_.bytes()) {
       buffer_ = Buffer::create(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -168,28 +164,39 @@ class ShadowVolumes final : public ShadowTechnique {
       vertexArray_.setFloatAttribute(0, 4, offsetof(VolumeVertex, position));
       vertexArray_.setFloatAttribute(1, 4, offsetof(VolumeVertex, plane));
       vertexArray_.setFloatAttribute(2, 1, offsetof(VolumeVertex, lightCap));
+      vertexArray_.setFloatAttribute(3, 1, offsetof(VolumeVertex, weight));
     }
     if (bytes > 0) glNamedBufferSubData(buffer_.id(), 0, GLsizeiptr(bytes), vertices_.data());
     return GLsizei(vertices_.size());
   }
 
   void countVolumes(const FrameInputs& in, const glm::vec3& camera, GLsizei vertexCount, bool depthPass) {
-    glBindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer().id());
+    glBindFramebuffer(GL_FRAMEBUFFER, count_.framebuffer().id());
     glViewport(0, 0, in.size.x, in.size.y);
-    glClearNamedFramebufferfi(target_.framebuffer().id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
-    glDisable(GL_DEPTH_TEST);  // the fragment shader does the exact "behind" test
+    const float zero = 0.0f;
+    glClearTexImage(count_.color().id(), 0, GL_RED, GL_FLOAT, &zero);
     glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
     glEnable(GL_DEPTH_CLAMP);  // no near/far clipping of faces reaching infinity
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glEnable(GL_STENCIL_TEST);
-    glStencilMask(0xFF);
-    glStencilFunc(GL_ALWAYS, 0, 0xFF);
-    // Depth-fail: faces behind the receiver, leaving a volume (back face) +1, entering
-    // (front) −1. Depth-pass: faces in front of it, entering +1, leaving −1. Either sum is
-    // the number of volumes holding the receiver (depth-pass: when none holds the eye).
-    glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, depthPass ? GL_DECR_WRAP : GL_INCR_WRAP);
-    glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, depthPass ? GL_INCR_WRAP : GL_DECR_WRAP);
+    // Each face adds ±1 where the fragment shader's exact test keeps it. Depth-fail: faces
+    // behind the receiver, leaving a volume (back face) +1, entering (front) −1.
+    // Depth-pass: faces in front of it, entering +1, leaving −1. Either sum is the number of
+    // volumes holding the receiver (depth-pass: when none holds the eye). Counted by
+    // blending in a float target, not by stencil increments, so that depth-pass can cull
+    // with the G-buffer's depth before the shader runs (a stencil write makes a rasterizer
+    // run the shader first): a face fragment beyond the receiver by more than the offset
+    // (a depth slope's worth of pixels plus 1024 steps of depth) cannot be in front of it,
+    // so only those that surely fail the exact test are culled. Depth-fail tests all.
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glDepthMask(GL_FALSE);  // the G-buffer's depth is only read
+    if (depthPass) {
+      glEnable(GL_DEPTH_TEST);
+      glDepthFunc(getenv("GT_NEVER") ? GL_NEVER : GL_LEQUAL);
+      glEnable(GL_POLYGON_OFFSET_FILL);
+      glPolygonOffset(-4.0f, -1024.0f);
+    } else {
+      glDisable(GL_DEPTH_TEST);
+    }
     countProgram_.use();
     bindReceiverInputs(countProgram_, in);
     countProgram_.set("uViewProjection", in.camera.viewProjection());
@@ -197,15 +204,21 @@ class ShadowVolumes final : public ShadowTechnique {
     countProgram_.set("uTieTolerance", 1e-5f * sceneExtent());
     countProgram_.set("uDepthPass", depthPass ? 1 : 0);
     glBindVertexArray(vertexArray_.id());
+    GLuint dq[2]; bool dbg = getenv("GT_DEBUG"); if (dbg) { glGenQueries(2, dq); glBeginQuery(0x82F4, dq[0]); glBeginQuery(GL_SAMPLES_PASSED, dq[1]); }
+    auto t0 = std::chrono::steady_clock::now();
     if (vertexCount > 0) glDrawArrays(GL_TRIANGLES, 0, vertexCount);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    if (dbg) { glFinish(); auto t1 = std::chrono::steady_clock::now(); glEndQuery(0x82F4); glEndQuery(GL_SAMPLES_PASSED); GLuint64 n=0, m=0; glGetQueryObjectui64v(dq[0], GL_QUERY_RESULT, &n); glGetQueryObjectui64v(dq[1], GL_QUERY_RESULT, &m); std::cerr << "DBG passed " << m << "\n"; std::cerr << "DBG frags " << n << " verts " << vertexCount << " ms " << std::chrono::duration<double,std::milli>(t1-t0).count() << " pass " << depthPass << "\n"; }
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
   }
 
-  void resolve(const FrameInputs& in, const VolumeLight& light, float weight) {
-    glStencilFunc(GL_EQUAL, 0, 0xFF);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE);
+  // Adds the light's weight where the count is 0 (blended: area samples add up).
+  void resolve(const FrameInputs& in, const VisibilityTarget& out, const VolumeLight& light, float weight) {
+    glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer.id());
+    glViewport(0, 0, in.size.x, in.size.y);
+    glBindTextureUnit(2, count_.color().id());
+    resolveProgram_.set("uCount", 2);
     resolveProgram_.set("uWeight", weight);
     bindReceiverInputs(resolveProgram_, in, light.position);
     resolveProgram_.set("uLightDirection", light.direction);
@@ -220,7 +233,7 @@ class ShadowVolumes final : public ShadowTechnique {
   Program countProgram_, resolveProgram_;
   VertexArray vertexArray_;
   Buffer buffer_;
-  RenderTarget target_;
+  RenderTarget count_;
   std::vector<VolumeVertex> vertices_;
   std::vector<VolumeMesh> meshes_;
   glm::vec3 lo_{0}, hi_{0};  // the scene's bounds

@@ -1,6 +1,7 @@
 #include "groundtruth/volume_geometry.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace testbed {
 namespace {
@@ -14,18 +15,21 @@ glm::vec4 planeThrough(const glm::vec3& normal, const glm::vec3& point) {
 
 enum Facing : signed char { kNone = 0, kTowards = 1, kAway = -1 };
 
-// A point light's sides end on the far plane only if the whole mesh lies in front of the
-// light along the plane's normal, with room to spare (the far ends stay within 100× the
-// plane's distance): then every side meets the plane once and every point of the mesh's
-// box lies before it.
+// The sides end on the far plane only if every one of them crosses it once, outwards, and
+// not too obliquely (the far ends stay within 100× the plane's distance from the light):
+// for a point light the whole mesh lies in front of the light along the plane's normal,
+// and every point of the mesh's box lies before the plane.
 bool farPlaneCutsEverySide(const VolumeMesh& mesh, const VolumeLight& light, const VolumeReach& reach) {
   if (!reach.bounded) return false;
-  const float planeDistance = reach.farOffset - glm::dot(reach.farNormal, light.directional ? glm::vec3(0) : light.position);
+  if (light.directional) {
+    if (!(glm::dot(reach.farNormal, light.direction) > 0.01f)) return false;
+  }
+  const float lightAlong = light.directional ? 0.0f : glm::dot(reach.farNormal, light.position);
   for (int k = 0; k < 8; ++k) {
     const glm::vec3 corner((k & 1) ? mesh.hi.x : mesh.lo.x, (k & 2) ? mesh.hi.y : mesh.lo.y, (k & 4) ? mesh.hi.z : mesh.lo.z);
     const float along = glm::dot(reach.farNormal, corner);
     if (!(along < reach.farOffset)) return false;
-    if (!light.directional && !(along - glm::dot(reach.farNormal, light.position) > 0.01f * planeDistance)) return false;
+    if (!light.directional && !(along - lightAlong > 0.01f * (reach.farOffset - lightAlong))) return false;
   }
   return true;
 }
@@ -102,10 +106,10 @@ VolumeStats appendShadowVolume(const VolumeMesh& volumeMesh, const VolumeLight& 
     return glm::vec4(p + along * away, 1);
   };
   auto emit = [&](const glm::vec4& p, const glm::vec4& q, const glm::vec4& r, const glm::vec4& plane,
-                  float lightCap = 0.0f) {
-    out.push_back({p, plane, lightCap});
-    out.push_back({q, plane, lightCap});
-    out.push_back({r, plane, lightCap});
+                  float lightCap = 0.0f, float weight = 1.0f) {
+    out.push_back({p, plane, lightCap, weight});
+    out.push_back({q, plane, lightCap, weight});
+    out.push_back({r, plane, lightCap, weight});
   };
 
   for (std::size_t f = 0; f < faces; ++f) {
@@ -127,18 +131,45 @@ VolumeStats appendShadowVolume(const VolumeMesh& volumeMesh, const VolumeLight& 
     for (int i = 0; i < 3; ++i) {
       const int other = mesh.neighbour[3 * f + i];
       if (other >= 0 && facing[std::size_t(other)] == facingHere) continue;
+      const bool twin = reach.twinSidesOnce && !mesh.closed && other >= 0 && facing[std::size_t(other)] == -facingHere;
+      if (twin && facingHere == kAway) continue;  // drawn with the light-facing region's
       // Edge a → b in the light-facing winding.
       glm::vec3 a = mesh.corners[3 * f + i], b = mesh.corners[3 * f + (i + 1) % 3];
       if (facingHere == kAway) std::swap(a, b);
       const glm::vec3 away = light.directional ? light.direction : a - light.position;
       const glm::vec4 plane = planeThrough(glm::cross(a - b, away), a);
       const glm::vec4 a4(a, 1), b4(b, 1), aFar = farEnd(a), bFar = farEnd(b);
-      emit(b4, a4, aFar, plane);
-      emit(b4, aFar, bFar, plane);
+      emit(b4, a4, aFar, plane, 0.0f, twin ? 2.0f : 1.0f);
+      emit(b4, aFar, bFar, plane, 0.0f, twin ? 2.0f : 1.0f);
       ++stats.sideQuads;
     }
   }
   return stats;
+}
+
+VolumeReach depthPassReach(const VolumeMesh& mesh, const VolumeLight& light, const glm::vec3& lo, const glm::vec3& hi) {
+  // Candidates: the light's axis (a plane across all of its rays) and the box's six faces.
+  const glm::vec3 candidates[7] = {light.direction, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  const glm::vec3 centre = (mesh.lo + mesh.hi) * 0.5f;
+  const glm::vec3 away = light.directional ? light.direction : centre - light.position;
+  VolumeReach best{.caps = false, .bounded = false, .twinSidesOnce = true};
+  float bestLength = INFINITY;
+  for (const glm::vec3& normal : candidates) {
+    VolumeReach reach{.caps = false, .bounded = true, .farNormal = normal, .twinSidesOnce = true};
+    reach.farOffset = -INFINITY;
+    for (int k = 0; k < 8; ++k) {
+      const glm::vec3 corner((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
+      reach.farOffset = std::max(reach.farOffset, glm::dot(normal, corner));
+    }
+    if (!farPlaneCutsEverySide(mesh, light, reach)) continue;
+    // How far the side through the mesh's centre runs before it ends: the fill it costs.
+    const float length = (reach.farOffset - glm::dot(normal, centre)) / glm::dot(normal, away) * glm::length(away);
+    if (length < bestLength) {
+      bestLength = length;
+      best = reach;
+    }
+  }
+  return best;
 }
 
 bool eyeMayBeInVolume(const VolumeMesh& mesh, const VolumeLight& light, const glm::vec3& eye, float reach) {

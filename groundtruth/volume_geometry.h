@@ -45,11 +45,16 @@ VolumeMesh volumeMesh(MeshTopology topology);
 // dark cap lies at infinity. It also never meets a side beyond the plane
 // dot(farNormal, p) = farOffset when the eye and every receiver lie before it: `bounded`
 // ends the sides on that plane instead, so the fill they cost stays within the scene.
+//
+// On an open mesh both regions beside a silhouette edge get volumes, and their sides there
+// are the same quad, wound the same way (both volumes lie beyond it): `twinSidesOnce` draws
+// it once with weight 2, the same sum for half the fill.
 struct VolumeReach {
   bool caps = true;
   bool bounded = false;
   glm::vec3 farNormal{0};  // unit; the light's axis or direction
   float farOffset = 0;
+  bool twinSidesOnce = false;
 };
 
 // One vertex of the volume's triangle list. `plane` is the (unit normal, offset) plane of
@@ -57,10 +62,12 @@ struct VolumeReach {
 // `lightCap` is 1 on light caps: a receiver lying in such a plane is the occluder's own
 // lit surface and must count the cap as behind it (a tie broken on purpose). Side faces
 // get 0: a receiver in a side plane is on a true shadow boundary, decided by sign alone.
+// `weight` is what the face adds to a count (1, or 2 for twin sides drawn once).
 struct VolumeVertex {
   glm::vec4 position;  // w = 0 for points extruded to infinity
   glm::vec4 plane;
   float lightCap;
+  float weight;
 };
 
 struct VolumeStats {
@@ -76,6 +83,12 @@ VolumeStats appendShadowVolume(const VolumeMesh& mesh, const VolumeLight& light,
                                const VolumeReach& reach = {});
 VolumeStats appendShadowVolume(const TriMesh& mesh, const VolumeLight& light, std::vector<VolumeVertex>& out,
                                const VolumeReach& reach = {});
+
+// The bounded depth-pass reach that ends the mesh's sides soonest (at its centre) past the
+// box lo..hi, which must hold the eye and every receiver: among the planes across the
+// light's axis and those of the box's faces, one every side crosses outwards; unbounded
+// (sides to infinity) when none does.
+VolumeReach depthPassReach(const VolumeMesh& mesh, const VolumeLight& light, const glm::vec3& lo, const glm::vec3& hi);
 
 // False only when the eye is certainly outside every volume of the mesh: the segment from
 // the eye towards the light (a point light's position, or away from a directional light's
