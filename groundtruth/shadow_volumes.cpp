@@ -1,7 +1,6 @@
 #include "groundtruth/shadow_volumes.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <iostream>
 
@@ -156,7 +155,9 @@ class ShadowVolumes final : public ShadowTechnique {
   GLsizei upload(const VolumeLight& light, bool depthPass, const std::pair<glm::vec3, glm::vec3>& bounds) {
     vertices_.clear();
     for (const auto& mesh : meshes_) {
-      const VolumeReach reach = depthPass ? depthPassReach(mesh, light, bounds.first, bounds.second) : VolumeReach{}; auto st = appendShadowVolume(mesh, light, vertices_, reach); if (getenv("GT_DEBUG")) std::cerr << "DBG faces " << mesh.normal.size() << " caps " << st.capTriangles << " sides " << st.sideQuads << " bounded " << st.bounded << " closed " << st.closedMeshes << " n " << reach.farNormal.x << "," << reach.farNormal.y << "," << reach.farNormal.z << "\n"; }
+      const VolumeReach reach = depthPass ? depthPassReach(mesh, light, bounds.first, bounds.second) : VolumeReach{};
+      appendShadowVolume(mesh, light, vertices_, reach);
+    }
     const std::size_t bytes = vertices_.size() * sizeof(VolumeVertex);
     if (bytes > buffer_.bytes()) {
       buffer_ = Buffer::create(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -191,7 +192,7 @@ class ShadowVolumes final : public ShadowTechnique {
     glDepthMask(GL_FALSE);  // the G-buffer's depth is only read
     if (depthPass) {
       glEnable(GL_DEPTH_TEST);
-      glDepthFunc(getenv("GT_NEVER") ? GL_NEVER : GL_LEQUAL);
+      glDepthFunc(GL_LEQUAL);
       glEnable(GL_POLYGON_OFFSET_FILL);
       glPolygonOffset(-4.0f, -1024.0f);
     } else {
@@ -204,10 +205,7 @@ class ShadowVolumes final : public ShadowTechnique {
     countProgram_.set("uTieTolerance", 1e-5f * sceneExtent());
     countProgram_.set("uDepthPass", depthPass ? 1 : 0);
     glBindVertexArray(vertexArray_.id());
-    GLuint dq[2]; bool dbg = getenv("GT_DEBUG"); if (dbg) { glGenQueries(2, dq); glBeginQuery(0x82F4, dq[0]); glBeginQuery(GL_SAMPLES_PASSED, dq[1]); }
-    auto t0 = std::chrono::steady_clock::now();
     if (vertexCount > 0) glDrawArrays(GL_TRIANGLES, 0, vertexCount);
-    if (dbg) { glFinish(); auto t1 = std::chrono::steady_clock::now(); glEndQuery(0x82F4); glEndQuery(GL_SAMPLES_PASSED); GLuint64 n=0, m=0; glGetQueryObjectui64v(dq[0], GL_QUERY_RESULT, &n); glGetQueryObjectui64v(dq[1], GL_QUERY_RESULT, &m); std::cerr << "DBG passed " << m << "\n"; std::cerr << "DBG frags " << n << " verts " << vertexCount << " ms " << std::chrono::duration<double,std::milli>(t1-t0).count() << " pass " << depthPass << "\n"; }
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
