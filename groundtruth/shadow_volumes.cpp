@@ -91,6 +91,8 @@ class ShadowVolumes final : public ShadowTechnique {
         std::cerr << "\r  area-light sample " << s + 1 << "/" << lights.size() << (s + 1 == lights.size() ? "\n" : "")
                   << std::flush;
       const bool depthPass = eyeOutsideEveryVolume(in.scene, lights[s], camera) && !depthFailOnly_;
+      view_ = in.camera.view;
+      nearPlane_ = in.scene.camera.nearPlane;
       const GLsizei vertexCount = upload(lights[s], depthPass, depthPassBounds(camera));
       {
         auto scope = timer.scope("volumes");
@@ -151,11 +153,26 @@ class ShadowVolumes final : public ShadowTechnique {
     return {glm::min(lo_, eye) - margin, glm::max(hi_, eye) + margin};
   }
 
+  // True unless the mesh's box lies wholly beyond the camera's near plane (with a margin):
+  // where the near plane clips an occluder, the G-buffer shows what lies behind it.
+  bool nearPlaneMayClip(const VolumeMesh& mesh) const {
+    float nearest = INFINITY;
+    for (int k = 0; k < 8; ++k) {
+      const glm::vec3 corner((k & 1) ? mesh.hi.x : mesh.lo.x, (k & 2) ? mesh.hi.y : mesh.lo.y, (k & 4) ? mesh.hi.z : mesh.lo.z);
+      nearest = std::min(nearest, -(view_ * glm::vec4(corner, 1)).z);
+    }
+    return !(nearest > nearPlane_ * 1.01f + 1e-3f * sceneExtent());
+  }
+
   // Builds the volumes of every object for one light sample and uploads them.
   GLsizei upload(const VolumeLight& light, bool depthPass, const std::pair<glm::vec3, glm::vec3>& bounds) {
     vertices_.clear();
     for (const auto& mesh : meshes_) {
-      const VolumeReach reach = depthPass ? depthPassReach(mesh, light, bounds.first, bounds.second) : VolumeReach{};
+      VolumeReach reach;
+      if (depthPass) {
+        reach = depthPassReach(mesh, light, bounds.first, bounds.second);
+        reach.lightCaps = nearPlaneMayClip(mesh);
+      }
       appendShadowVolume(mesh, light, vertices_, reach);
     }
     const std::size_t bytes = vertices_.size() * sizeof(VolumeVertex);
@@ -235,6 +252,8 @@ class ShadowVolumes final : public ShadowTechnique {
   std::vector<VolumeVertex> vertices_;
   std::vector<VolumeMesh> meshes_;
   glm::vec3 lo_{0}, hi_{0};  // the scene's bounds
+  glm::mat4 view_{1.0f};     // the camera's, this frame
+  float nearPlane_ = 1.0f;
   const Scene* meshesOf_ = nullptr;
 };
 

@@ -1,5 +1,6 @@
 // Depth-pass counting (chosen where the eye is in no volume, with sides ending on a far
-// plane, no caps, twin sides drawn once and a depth pre-test) against depth-fail counting
+// plane, light caps only where the near plane clips, twin sides drawn once and a depth
+// pre-test) against depth-fail counting
 // with closed volumes to infinity and no pre-test, the straightforward path: the same
 // visibility, bit for bit, wherever the eye is outside every volume. And the choice itself
 // on a camera in shadow.
@@ -85,6 +86,18 @@ TEST_F(DepthPassCounting, OpenMeshesMatchDepthFail) {
   scene.objects.push_back({"lid", lid});
   Scene elephant = loadScene(std::string(TESTBED_TEST_DATA_DIR) + "/scenes/elephant_with_holes.json");
   for (auto& object : elephant.objects) scene.objects.push_back(std::move(object));
+  expectSameAsDepthFail(scene);
+}
+
+TEST_F(DepthPassCounting, AnOccluderCrossingTheNearPlaneMatchesDepthFail) {
+  // The camera's near plane clips a bar away: the G-buffer shows the floor through it, so
+  // depth-pass must meet the bar's light caps between the eye and the floor.
+  Scene scene = floorScene("near-plane", spot({0, 30, -45}, 90));
+  scene.light.target = {0, 0, -10};
+  scene.camera.eye = {0, 12, -30};
+  scene.camera.target = {0, 0, 0};
+  scene.objects.push_back({"bar", translated(makeBox(10, 0.5f, 3), {2, 11.2f, -29.2f})});
+  scene.objects.push_back({"box", translated(makeBox(5, 5, 5), {6, 2.5f, 4})});
   expectSameAsDepthFail(scene);
 }
 

@@ -115,17 +115,17 @@ VolumeStats appendShadowVolume(const VolumeMesh& volumeMesh, const VolumeLight& 
   for (std::size_t f = 0; f < faces; ++f) {
     const Facing facingHere = facing[f];
     if (facingHere == kNone || (mesh.closed && facingHere == kAway)) continue;
-    if (reach.caps) {
-      // Corners ordered so the triangle is counter-clockwise seen from the light.
-      glm::vec3 corner[3] = {mesh.corners[3 * f], mesh.corners[3 * f + 1], mesh.corners[3 * f + 2]};
-      if (facingHere == kAway) std::swap(corner[1], corner[2]);
+    // Corners ordered so the triangle is counter-clockwise seen from the light.
+    glm::vec3 corner[3] = {mesh.corners[3 * f], mesh.corners[3 * f + 1], mesh.corners[3 * f + 2]};
+    if (facingHere == kAway) std::swap(corner[1], corner[2]);
+    if (reach.lightCaps) {
       const glm::vec4 capPlane = planeThrough(glm::cross(corner[1] - corner[0], corner[2] - corner[0]), corner[0]);
       emit(glm::vec4(corner[0], 1), glm::vec4(corner[1], 1), glm::vec4(corner[2], 1), capPlane, 1.0f);
       ++stats.capTriangles;
-      if (!light.directional) {  // a directional dark cap collapses to one point at infinity
-        emit(atInfinity(corner[0]), atInfinity(corner[2]), atInfinity(corner[1]), glm::vec4(0, 0, 0, 1));
-        ++stats.capTriangles;
-      }
+    }
+    if (reach.darkCaps && !light.directional) {  // a directional dark cap collapses to one point at infinity
+      emit(atInfinity(corner[0]), atInfinity(corner[2]), atInfinity(corner[1]), glm::vec4(0, 0, 0, 1));
+      ++stats.capTriangles;
     }
     // Side quads on the region's boundary: the neighbour is missing or faces otherwise.
     for (int i = 0; i < 3; ++i) {
@@ -152,10 +152,10 @@ VolumeReach depthPassReach(const VolumeMesh& mesh, const VolumeLight& light, con
   const glm::vec3 candidates[7] = {light.direction, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   const glm::vec3 centre = (mesh.lo + mesh.hi) * 0.5f;
   const glm::vec3 away = light.directional ? light.direction : centre - light.position;
-  VolumeReach best{.caps = false, .bounded = false, .twinSidesOnce = true};
+  VolumeReach best{.lightCaps = false, .darkCaps = false, .bounded = false, .twinSidesOnce = true};
   float bestLength = INFINITY;
   for (const glm::vec3& normal : candidates) {
-    VolumeReach reach{.caps = false, .bounded = true, .farNormal = normal, .twinSidesOnce = true};
+    VolumeReach reach{.lightCaps = false, .darkCaps = false, .bounded = true, .farNormal = normal, .twinSidesOnce = true};
     reach.farOffset = -INFINITY;
     for (int k = 0; k < 8; ++k) {
       const glm::vec3 corner((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);

@@ -40,17 +40,18 @@ VolumeMesh volumeMesh(MeshTopology topology);
 // Which parts of the volumes are built. Depth-fail counting (Everitt & Kilgard 2002, the
 // default) counts the faces behind the receiver and needs closed volumes: caps, and sides
 // that reach infinity. Depth-pass counting (Crow 1977; Heidmann 1991) counts the faces
-// between the eye and the receiver and meets neither cap there: a light cap is the
-// occluder's own surface, which the G-buffer shows in front of anything it hides, and a
-// dark cap lies at infinity. It also never meets a side beyond the plane
-// dot(farNormal, p) = farOffset when the eye and every receiver lie before it: `bounded`
-// ends the sides on that plane instead, so the fill they cost stays within the scene.
+// between the eye and the receiver. A dark cap, at infinity, is never there; nor is a
+// light cap, the occluder's own surface, which the G-buffer shows in front of anything it
+// hides, unless the camera's near plane clips it away: then `lightCaps` must stay on. Nor
+// is a side beyond the plane dot(farNormal, p) = farOffset when the eye and every receiver
+// lie before it: `bounded` ends the sides on that plane instead, so the fill they cost
+// stays within the scene.
 //
 // On an open mesh both regions beside a silhouette edge get volumes, and their sides there
 // are the same quad, wound the same way (both volumes lie beyond it): `twinSidesOnce` draws
 // it once with weight 2, the same sum for half the fill.
 struct VolumeReach {
-  bool caps = true;
+  bool lightCaps = true, darkCaps = true;
   bool bounded = false;
   glm::vec3 farNormal{0};  // unit; the light's axis or direction
   float farOffset = 0;
