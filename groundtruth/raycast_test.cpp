@@ -386,7 +386,8 @@ TEST_F(RayCastAgreement, BundledStackedOccluders) { expectAgreement(bundled("sta
 
 TEST_F(RayCastAgreement, CameraInsideAShadowVolume) {
   // The camera sits under a wide slab, inside its volume, looking out across the floor:
-  // the depth-fail counting must not depend on the camera being outside.
+  // the counting must not depend on the camera being outside (the choice falls to
+  // depth-fail there: DepthPassChoice).
   Scene scene = floorScene("camera-in-volume", directional({0.2f, -1, 0.1f}, 60));
   scene.objects.push_back({"slab", translated(makeBox(30, 1, 30), {0, 14, 0})});
   scene.objects.push_back({"post", translated(makeBox(2, 6, 2), {8, 3, 9})});

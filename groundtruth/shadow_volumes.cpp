@@ -63,7 +63,7 @@ class ShadowVolumes final : public ShadowTechnique {
     return {.id = "groundtruth",
             .output = OutputKind::Hard,
             .citation = "Crow 1977; depth-pass counting: Heidmann 1991; depth-fail: Everitt & Kilgard 2002",
-            .summary = "exact hard shadows: stencil shadow volumes from OpenMesh silhouettes"};
+            .summary = "exact hard shadows: shadow volumes from OpenMesh silhouettes, counted per pixel"};
   }
   static TechniqueInfo describeArea() {
     return {.id = "area",
@@ -158,7 +158,7 @@ class ShadowVolumes final : public ShadowTechnique {
   bool nearPlaneMayClip(const VolumeMesh& mesh) const {
     float nearest = INFINITY;
     for (int k = 0; k < 8; ++k) {
-      const glm::vec3 corner((k & 1) ? mesh.hi.x : mesh.lo.x, (k & 2) ? mesh.hi.y : mesh.lo.y, (k & 4) ? mesh.hi.z : mesh.lo.z);
+      const glm::vec3 corner = boxCorner(mesh.lo, mesh.hi, k);
       nearest = std::min(nearest, -(view_ * glm::vec4(corner, 1)).z);
     }
     return !(nearest > nearPlane_ * 1.01f + 1e-3f * sceneExtent());
@@ -232,6 +232,8 @@ class ShadowVolumes final : public ShadowTechnique {
   void resolve(const FrameInputs& in, const VisibilityTarget& out, const VolumeLight& light, float weight) {
     glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer.id());
     glViewport(0, 0, in.size.x, in.size.y);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
     glBindTextureUnit(2, count_.color().id());
     resolveProgram_.set("uCount", 2);
     resolveProgram_.set("uWeight", weight);

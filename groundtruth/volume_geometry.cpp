@@ -26,7 +26,7 @@ bool farPlaneCutsEverySide(const VolumeMesh& mesh, const VolumeLight& light, con
   }
   const float lightAlong = light.directional ? 0.0f : glm::dot(reach.farNormal, light.position);
   for (int k = 0; k < 8; ++k) {
-    const glm::vec3 corner((k & 1) ? mesh.hi.x : mesh.lo.x, (k & 2) ? mesh.hi.y : mesh.lo.y, (k & 4) ? mesh.hi.z : mesh.lo.z);
+    const glm::vec3 corner = boxCorner(mesh.lo, mesh.hi, k);
     const float along = glm::dot(reach.farNormal, corner);
     if (!(along < reach.farOffset)) return false;
     if (!light.directional && !(along - lightAlong > 0.01f * (reach.farOffset - lightAlong))) return false;
@@ -158,7 +158,7 @@ VolumeReach depthPassReach(const VolumeMesh& mesh, const VolumeLight& light, con
     VolumeReach reach{.lightCaps = false, .darkCaps = false, .bounded = true, .farNormal = normal, .twinSidesOnce = true};
     reach.farOffset = -INFINITY;
     for (int k = 0; k < 8; ++k) {
-      const glm::vec3 corner((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
+      const glm::vec3 corner = boxCorner(lo, hi, k);
       reach.farOffset = std::max(reach.farOffset, glm::dot(normal, corner));
     }
     if (!farPlaneCutsEverySide(mesh, light, reach)) continue;

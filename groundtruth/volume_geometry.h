@@ -37,6 +37,11 @@ struct VolumeMesh {
 };
 VolumeMesh volumeMesh(MeshTopology topology);
 
+// Corner k (0..7) of the box lo..hi: bit 0 picks x, bit 1 y, bit 2 z.
+inline glm::vec3 boxCorner(const glm::vec3& lo, const glm::vec3& hi, int k) {
+  return {(k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z};
+}
+
 // Which parts of the volumes are built. Depth-fail counting (Everitt & Kilgard 2002, the
 // default) counts the faces behind the receiver and needs closed volumes: caps, and sides
 // that reach infinity. Depth-pass counting (Crow 1977; Heidmann 1991) counts the faces
