@@ -11,6 +11,7 @@
 #include <cstring>
 #include <string>
 
+#include "groundtruth/hard_case_scenes.h"
 #include "groundtruth/volume_geometry.h"
 #include "testbed/harness/frame_runner.h"
 #include "testbed/scene/view.h"
@@ -21,9 +22,7 @@ namespace testbed {
 namespace {
 
 using test::directional;
-using test::floorScene;
 using test::spot;
-using test::translated;
 
 TechniqueRun run(FrameRunner& runner, const RegisteredTechnique& technique) {
   return runner.run(technique, resolveParameters("groundtruth", technique.info->parameters, {}));
@@ -74,39 +73,20 @@ TEST_F(DepthPassCounting, SpotAndDirectionalBoxesMatchDepthFail) {
 }
 
 TEST_F(DepthPassCounting, OpenMeshesMatchDepthFail) {
-  // Open meshes have volumes for both facings and twin sides on their silhouettes: a lid
-  // facing away from the light and CGAL's elephant with holes.
-  Scene scene = floorScene("open-meshes", spot({5, 45, -5}, 70));
-  TriMesh lid = makePlane(10, 8, 4);
-  for (auto v : lid.vertices()) {
-    auto& p = lid.point(v);
-    p = {p[0] - 8, 9 - p[1], -p[2] + 6};
-  }
-  lid.update_normals();
-  scene.objects.push_back({"lid", lid});
-  Scene elephant = loadScene(std::string(TESTBED_TEST_DATA_DIR) + "/scenes/elephant_with_holes.json");
-  for (auto& object : elephant.objects) scene.objects.push_back(std::move(object));
-  expectSameAsDepthFail(scene);
+  // Open meshes have volumes for both facings and twin sides on their silhouettes.
+  expectSameAsDepthFail(test::openMeshesScene());
 }
 
 TEST_F(DepthPassCounting, AnOccluderCrossingTheNearPlaneMatchesDepthFail) {
   // The camera's near plane clips a bar away: the G-buffer shows the floor through it, so
   // depth-pass must meet the bar's light caps between the eye and the floor.
-  Scene scene = floorScene("near-plane", spot({0, 30, -45}, 90));
-  scene.light.target = {0, 0, -10};
-  scene.camera.eye = {0, 12, -30};
-  scene.camera.target = {0, 0, 0};
-  scene.objects.push_back({"bar", translated(makeBox(10, 0.5f, 3), {2, 11.2f, -29.2f})});
-  scene.objects.push_back({"box", translated(makeBox(5, 5, 5), {6, 2.5f, 4})});
-  expectSameAsDepthFail(scene);
+  expectSameAsDepthFail(test::nearPlaneScene());
 }
 
 TEST(DepthPassChoice, AnEyeInShadowChoosesDepthFail) {
-  // The camera under a wide slab is inside its volume (RayCastAgreement's
-  // CameraInsideAShadowVolume): depth-pass would miss the slab's volume there.
-  Scene scene = floorScene("camera-in-volume", directional({0.2f, -1, 0.1f}, 60));
-  scene.objects.push_back({"slab", translated(makeBox(30, 1, 30), {0, 14, 0})});
-  scene.camera.eye = {0, 6, -2};
+  // The camera under a wide slab is inside its volume: depth-pass would miss the slab's
+  // volume there.
+  Scene scene = test::cameraInVolumeScene();
   EXPECT_TRUE(eyeInAnyVolume(scene));
   // Beside the slab, in the light, the eye is outside every volume.
   scene.camera.eye = {40, 6, -2};
@@ -121,11 +101,7 @@ TEST(DepthPassChoice, AnEyeInShadowChoosesDepthFail) {
 
 TEST_F(DepthPassCounting, AnEyeInShadowGivesTheDepthFailImage) {
   // Depth-pass here would be off by the slab: the choice must fall to depth-fail.
-  Scene scene = floorScene("camera-in-volume", directional({0.2f, -1, 0.1f}, 60));
-  scene.objects.push_back({"slab", translated(makeBox(30, 1, 30), {0, 14, 0})});
-  scene.objects.push_back({"post", translated(makeBox(2, 6, 2), {8, 3, 9})});
-  scene.camera.eye = {0, 6, -2};
-  scene.camera.target = {14, 0, 20};
+  const Scene scene = test::cameraInVolumeScene();
   ASSERT_TRUE(eyeInAnyVolume(scene));
   RenderSettings settings;
   settings.size = {320, 180};
