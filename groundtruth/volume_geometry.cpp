@@ -52,6 +52,26 @@ bool segmentMeetsTriangle(const glm::dvec3& from, const glm::dvec3& to, const gl
   return t >= -margin && t <= 1.0 + margin;
 }
 
+// The slab test: the parameter ranges inside each pair of planes overlap within [0, 1],
+// widened by `margin` as segmentMeetsTriangle's is.
+bool segmentMeetsBox(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec3& lo, const glm::dvec3& hi,
+                     double margin) {
+  double enter = -margin, leave = 1.0 + margin;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double d = to[axis] - from[axis];
+    if (d == 0.0) {
+      if (from[axis] < lo[axis] || from[axis] > hi[axis]) return false;
+      continue;
+    }
+    double t0 = (lo[axis] - from[axis]) / d, t1 = (hi[axis] - from[axis]) / d;
+    if (t0 > t1) std::swap(t0, t1);
+    enter = std::max(enter, t0);
+    leave = std::min(leave, t1);
+    if (enter > leave) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 VolumeMesh volumeMesh(MeshTopology topology) {
@@ -175,10 +195,15 @@ VolumeReach depthPassReach(const VolumeMesh& mesh, const VolumeLight& light, con
 bool eyeMayBeInVolume(const VolumeMesh& mesh, const VolumeLight& light, const glm::vec3& eye, float reach) {
   const glm::dvec3 from(eye);
   const glm::dvec3 to = light.directional ? from - double(reach) * glm::dvec3(light.direction) : glm::dvec3(light.position);
+  // A segment that misses the mesh's box, widened beyond the triangles' margins, meets none
+  // of them.
+  const glm::dvec3 widen(1e-3 * glm::length(glm::dvec3(mesh.hi - mesh.lo)) + 1e-3);
+  constexpr double kMargin = 1e-4;
+  if (!segmentMeetsBox(from, to, glm::dvec3(mesh.lo) - widen, glm::dvec3(mesh.hi) + widen, kMargin)) return false;
   const auto& corners = mesh.topology.corners;
   for (std::size_t f = 0; f < mesh.normal.size(); ++f) {
     if (mesh.normal[f] == glm::vec3(0)) continue;  // degenerate: no volume
-    if (segmentMeetsTriangle(from, to, corners[3 * f], corners[3 * f + 1], corners[3 * f + 2], 1e-4)) return true;
+    if (segmentMeetsTriangle(from, to, corners[3 * f], corners[3 * f + 1], corners[3 * f + 2], kMargin)) return true;
   }
   return false;
 }

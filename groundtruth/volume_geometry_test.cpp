@@ -201,6 +201,7 @@ TEST(VolumeGeometry, EyeInVolumeExactlyWhenItsWayToTheLightCrossesATriangle) {
     EXPECT_TRUE(eyeMayBeInVolume(slab, light, {1, 2, 1}, 100)) << "under the slab";
     EXPECT_FALSE(eyeMayBeInVolume(slab, light, {1, 20, 1}, 100)) << "above it";
     EXPECT_FALSE(eyeMayBeInVolume(slab, light, {30, 2, 1}, 100)) << "beside it";
+    EXPECT_TRUE(eyeMayBeInVolume(slab, light, {1, 10, 1}, 100)) << "inside it, below its top";
     // On the shadow's boundary (the way to the light grazes the slab's edge): a tie counts
     // as inside, so that depth-fail decides.
     EXPECT_TRUE(eyeMayBeInVolume(slab, light, {light.directional ? 5.0f : 100.0f / 13.0f, 0, 1}, 100));
