@@ -15,6 +15,7 @@
 #include <numbers>
 #include <string>
 
+#include "groundtruth/hard_case_scenes.h"
 #include "groundtruth/shadow_volumes.h"
 #include "testbed/harness/frame_runner.h"
 #include "testbed/io/image_io.h"
@@ -385,14 +386,9 @@ TEST_F(RayCastAgreement, BundledStackedOccluders) { expectAgreement(bundled("sta
 // Hard cases (issue 3): none may crash, and both ground truths must still agree.
 
 TEST_F(RayCastAgreement, CameraInsideAShadowVolume) {
-  // The camera sits under a wide slab, inside its volume, looking out across the floor:
-  // the depth-fail counting must not depend on the camera being outside.
-  Scene scene = floorScene("camera-in-volume", directional({0.2f, -1, 0.1f}, 60));
-  scene.objects.push_back({"slab", translated(makeBox(30, 1, 30), {0, 14, 0})});
-  scene.objects.push_back({"post", translated(makeBox(2, 6, 2), {8, 3, 9})});
-  scene.camera.eye = {0, 6, -2};
-  scene.camera.target = {14, 0, 20};
-  expectAgreement(scene);
+  // The counting must not depend on the camera being outside its volumes (the choice falls
+  // to depth-fail there: DepthPassChoice).
+  expectAgreement(test::cameraInVolumeScene());
 }
 
 TEST_F(RayCastAgreement, LightAlmostGrazingTheReceiver) {
@@ -403,21 +399,7 @@ TEST_F(RayCastAgreement, LightAlmostGrazingTheReceiver) {
   expectAgreement(scene);
 }
 
-TEST_F(RayCastAgreement, OpenMeshAndMeshWithHoles) {
-  // An open occluder (a plane turned upside down: it faces away from the light) and
-  // CGAL's elephant with holes (a mesh with boundary loops).
-  Scene scene = floorScene("open-meshes", spot({5, 45, -5}, 70));
-  TriMesh lid = makePlane(10, 8, 4);
-  for (auto v : lid.vertices()) {
-    auto& p = lid.point(v);
-    p = {p[0] - 8, 9 - p[1], -p[2] + 6};  // mirrored in y: normal now points down
-  }
-  lid.update_normals();
-  scene.objects.push_back({"lid", lid});
-  Scene elephant = loadScene(std::string(TESTBED_TEST_DATA_DIR) + "/scenes/elephant_with_holes.json");
-  for (auto& object : elephant.objects) scene.objects.push_back(std::move(object));
-  expectAgreement(scene);
-}
+TEST_F(RayCastAgreement, OpenMeshAndMeshWithHoles) { expectAgreement(test::openMeshesScene()); }
 
 TEST_F(RayCastAgreement, CoplanarAndDegenerateTriangles) {
   Scene scene = floorScene("coplanar-degenerate", directional({0.3f, -1, 0.2f}, 60));
@@ -439,18 +421,7 @@ TEST_F(RayCastAgreement, CoplanarAndDegenerateTriangles) {
   expectAgreement(scene);
 }
 
-TEST_F(RayCastAgreement, OccluderCrossingTheNearPlane) {
-  // A bar passes just under the camera, through its near plane (1 unit): the part the
-  // camera clips away still casts its shadow onto the floor.
-  Scene scene = floorScene("near-plane", spot({0, 30, -45}, 90));
-  scene.light.target = {0, 0, -10};
-  scene.camera.eye = {0, 12, -30};
-  scene.camera.target = {0, 0, 0};
-  scene.camera.nearPlane = 1.0f;
-  scene.objects.push_back({"bar", translated(makeBox(10, 0.5f, 3), {2, 11.2f, -29.2f})});
-  scene.objects.push_back({"box", translated(makeBox(5, 5, 5), {6, 2.5f, 4})});
-  expectAgreement(scene);
-}
+TEST_F(RayCastAgreement, OccluderCrossingTheNearPlane) { expectAgreement(test::nearPlaneScene()); }
 
 TEST_F(RayCastAgreement, VeryLargeDepthRange) {
   // Light and camera with near 0.01 and far 1e5 over a scene a thousand units wide.

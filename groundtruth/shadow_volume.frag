@@ -1,16 +1,26 @@
 #version 450 core
-// Depth-fail counting without a depth buffer: a volume face counts only if it lies behind
-// the receiver seen at this pixel. The camera ray crosses the face's plane before the
-// receiver exactly when camera and receiver lie on opposite sides of it, which is an
-// exact test in world space, free of depth-buffer precision. A receiver within the tie
-// tolerance of a light cap's plane (the cap on its own surface) counts the cap as behind
-// it, so lit surfaces are outside their own volumes; side faces are decided by sign alone.
+// Counting without depth-buffer precision: a volume face counts only if it lies behind the
+// receiver seen at this pixel (depth-fail) or in front of it (depth-pass), as +weight where
+// the ray leaves a volume (depth-fail) or enters it (depth-pass), -weight otherwise, summed by
+// additive blending. The depth test runs first (depth-pass culls with the G-buffer's
+// depth, conservatively offset); the shader's test alone decides. The camera ray
+// crosses the face's plane before the receiver exactly when camera and receiver lie on
+// opposite sides of it, which is an exact test in world space, free of depth-buffer
+// precision. A receiver within the tie tolerance of a light cap's plane (the cap on its own
+// surface) counts the cap as behind it, so lit surfaces are outside their own volumes; side
+// faces are decided by sign alone. Both modes run the same test and keep complementary
+// faces, so where the eye is in no volume their counts agree exactly.
 #include "testbed/glsl/receiver.glsl"
+
+layout(early_fragment_tests) in;
+layout(location = 0) out float outCount;
 
 flat in vec4 vPlane;
 flat in float vLightCap;
+flat in float vWeight;  // 1, or 2 for a side two volumes share
 uniform vec3 uCameraPosition;
 uniform float uTieTolerance;
+uniform int uDepthPass;  // 1: count the faces in front of the receiver, 0: those behind it
 
 void main() {
   Receiver r;
@@ -19,5 +29,8 @@ void main() {
   float atReceiver = dot(vPlane.xyz, r.position) + vPlane.w;
   bool onOwnCap = vLightCap > 0.5 && abs(atReceiver) <= uTieTolerance;
   bool behind = onOwnCap || (atCamera > 0.0) == (atReceiver > 0.0);
-  if (!behind) discard;
+  bool depthPass = uDepthPass == 1;
+  if (behind == depthPass) discard;
+  // Seen from outside (front face) the ray enters the volume there.
+  outCount = gl_FrontFacing == depthPass ? vWeight : -vWeight;
 }

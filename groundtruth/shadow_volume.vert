@@ -3,11 +3,14 @@
 layout(location = 0) in vec4 inPosition;
 layout(location = 1) in vec4 inPlane;
 layout(location = 2) in float inLightCap;
+layout(location = 3) in float inWeight;
 uniform mat4 uViewProjection;
 flat out vec4 vPlane;
 flat out float vLightCap;
+flat out float vWeight;
 void main() {
   vPlane = inPlane;
   vLightCap = inLightCap;
+  vWeight = inWeight;
   gl_Position = uViewProjection * inPosition;
 }

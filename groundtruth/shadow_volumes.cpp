@@ -1,5 +1,6 @@
 #include "groundtruth/shadow_volumes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -46,20 +47,9 @@ std::vector<VolumeLight> lightSamples(const LightDesc& desc, const LightTransfor
   return samples;
 }
 
-float sceneExtent(const Scene& scene) {
-  glm::vec3 lo(INFINITY), hi(-INFINITY);
-  for (const auto& object : scene.objects)
-    for (const auto v : object.mesh.vertices()) {
-      const auto& p = object.mesh.point(v);
-      lo = glm::min(lo, glm::vec3(p[0], p[1], p[2]));
-      hi = glm::max(hi, glm::vec3(p[0], p[1], p[2]));
-    }
-  return glm::length(hi - lo);
-}
-
 class ShadowVolumes final : public ShadowTechnique {
  public:
-  explicit ShadowVolumes(bool area) : area_(area) {}
+  explicit ShadowVolumes(bool area, bool depthFailOnly = false) : area_(area), depthFailOnly_(depthFailOnly) {}
 
   // The area-light reference's one parameter (the point-light one has none).
   struct AreaParameters {
@@ -72,8 +62,8 @@ class ShadowVolumes final : public ShadowTechnique {
   static TechniqueInfo describePoint() {
     return {.id = "groundtruth",
             .output = OutputKind::Hard,
-            .citation = "Crow 1977; depth-fail counting: Everitt & Kilgard 2002",
-            .summary = "exact hard shadows: stencil shadow volumes from OpenMesh silhouettes"};
+            .citation = "Crow 1977; depth-pass counting: Heidmann 1991; depth-fail: Everitt & Kilgard 2002",
+            .summary = "exact hard shadows: shadow volumes from OpenMesh silhouettes, counted per pixel"};
   }
   static TechniqueInfo describeArea() {
     return {.id = "area",
@@ -90,7 +80,7 @@ class ShadowVolumes final : public ShadowTechnique {
   }
 
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {
-    prepare(in, out);
+    prepare(in);
     const float zero = 0.0f;
     glClearTexImage(out.texture.id(), 0, GL_RED, GL_FLOAT, &zero);
     const auto lights = lightSamples(in.scene.light, in.light, samples_);
@@ -100,39 +90,91 @@ class ShadowVolumes final : public ShadowTechnique {
       if (lights.size() >= 16 && (s % (lights.size() / 8) == 0 || s + 1 == lights.size()))
         std::cerr << "\r  area-light sample " << s + 1 << "/" << lights.size() << (s + 1 == lights.size() ? "\n" : "")
                   << std::flush;
-      const GLsizei vertexCount = upload(in.scene, lights[s]);
+      const bool depthPass = eyeOutsideEveryVolume(in.scene, lights[s], camera) && !depthFailOnly_;
+      view_ = in.camera.view;
+      nearPlane_ = in.scene.camera.nearPlane;
+      const GLsizei vertexCount = upload(lights[s], depthPass, depthPassBounds(camera));
       {
         auto scope = timer.scope("volumes");
-        countVolumes(in, camera, vertexCount);
+        countVolumes(in, camera, vertexCount, depthPass);
       }
       auto scope = timer.scope("visibility");
-      resolve(in, lights[s], 1.0f / float(lights.size()));
+      resolve(in, out, lights[s], 1.0f / float(lights.size()));
     }
-    glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_CLAMP);
   }
 
  private:
-  void prepare(const FrameInputs& in, const VisibilityTarget& out) {
+  void prepare(const FrameInputs& in) {
     if (!countProgram_) {
       countProgram_ = Program::graphics("groundtruth/shadow_volume.vert", "groundtruth/shadow_volume.frag");
       resolveProgram_ = Program::graphics("testbed/render/fullscreen.vert", "groundtruth/volume_visibility.frag");
       vertexArray_ = VertexArray::create();
     }
-    // The visibility target, and a stencil buffer for the volume counts.
-    target_.ensure({.size = in.size, .depth = GL_DEPTH24_STENCIL8, .borrowedColor = &out.texture});
+    // The volume counts (small integers, exact in half floats), tested against the
+    // G-buffer's depth.
+    count_.ensure({.size = in.size, .color = GL_R16F, .borrowedDepth = &in.gbuffer.depth()});
+  }
+
+  // The light-independent part, gathered once per scene: adjacency, face normals, bounds.
+  void gather(const Scene& scene) {
+    if (meshesOf_ == &scene) return;
+    meshes_.clear();
+    for (const auto& object : scene.objects) meshes_.push_back(volumeMesh(meshTopology(object.mesh)));
+    lo_ = glm::vec3(INFINITY);
+    hi_ = glm::vec3(-INFINITY);
+    for (const auto& object : scene.objects)
+      for (const auto v : object.mesh.vertices()) {
+        const auto& p = object.mesh.point(v);
+        lo_ = glm::min(lo_, glm::vec3(p[0], p[1], p[2]));
+        hi_ = glm::max(hi_, glm::vec3(p[0], p[1], p[2]));
+      }
+    meshesOf_ = &scene;
+  }
+  float sceneExtent() const { return glm::length(hi_ - lo_); }
+
+  // Depth-pass counting is exact when the eye lies in no volume (then a receiver's count is
+  // the number of volume faces entered minus left between the eye and the receiver); the
+  // eye is in a volume exactly when its way to the light crosses an occluder's triangle.
+  // Decided for every light (sample) and frame, as a real-time renderer would.
+  bool eyeOutsideEveryVolume(const Scene& scene, const VolumeLight& light, const glm::vec3& eye) {
+    gather(scene);
+    const float reach = glm::length(glm::max(glm::abs(eye - lo_), glm::abs(eye - hi_))) + 1.0f;
+    for (const auto& mesh : meshes_)
+      if (eyeMayBeInVolume(mesh, light, eye, reach)) return false;
+    return true;
+  }
+
+  // Depth-pass meets no volume face beyond the eye and the receivers, which lie in the
+  // scene's bounds: each mesh's sides end on a plane past both.
+  std::pair<glm::vec3, glm::vec3> depthPassBounds(const glm::vec3& eye) const {
+    const glm::vec3 margin(1e-3f * sceneExtent() + 1e-3f);  // G-buffer positions round off the bounds
+    return {glm::min(lo_, eye) - margin, glm::max(hi_, eye) + margin};
+  }
+
+  // True unless the mesh's box lies wholly beyond the camera's near plane (with a margin):
+  // where the near plane clips an occluder, the G-buffer shows what lies behind it.
+  bool nearPlaneMayClip(const VolumeMesh& mesh) const {
+    float nearest = INFINITY;
+    for (int k = 0; k < 8; ++k) {
+      const glm::vec3 corner = boxCorner(mesh.lo, mesh.hi, k);
+      nearest = std::min(nearest, -(view_ * glm::vec4(corner, 1)).z);
+    }
+    return !(nearest > nearPlane_ * 1.01f + 1e-3f * sceneExtent());
   }
 
   // Builds the volumes of every object for one light sample and uploads them.
-  GLsizei upload(const Scene& scene, const VolumeLight& light) {
-    if (topologyOf_ != &scene) {  // adjacency is gathered once per scene
-      topologies_.clear();
-      for (const auto& object : scene.objects) topologies_.push_back(meshTopology(object.mesh));
-      topologyOf_ = &scene;
-    }
+  GLsizei upload(const VolumeLight& light, bool depthPass, const std::pair<glm::vec3, glm::vec3>& bounds) {
     vertices_.clear();
-    for (const auto& topology : topologies_) appendShadowVolume(topology, light, vertices_);
+    for (const auto& mesh : meshes_) {
+      VolumeReach reach;
+      if (depthPass) {
+        reach = depthPassReach(mesh, light, bounds.first, bounds.second);
+        reach.lightCaps = nearPlaneMayClip(mesh);
+      }
+      appendShadowVolume(mesh, light, vertices_, reach);
+    }
     const std::size_t bytes = vertices_.size() * sizeof(VolumeVertex);
     if (bytes > buffer_.bytes()) {
       buffer_ = Buffer::create(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -140,41 +182,60 @@ class ShadowVolumes final : public ShadowTechnique {
       vertexArray_.setFloatAttribute(0, 4, offsetof(VolumeVertex, position));
       vertexArray_.setFloatAttribute(1, 4, offsetof(VolumeVertex, plane));
       vertexArray_.setFloatAttribute(2, 1, offsetof(VolumeVertex, lightCap));
+      vertexArray_.setFloatAttribute(3, 1, offsetof(VolumeVertex, weight));
     }
     if (bytes > 0) glNamedBufferSubData(buffer_.id(), 0, GLsizeiptr(bytes), vertices_.data());
     return GLsizei(vertices_.size());
   }
 
-  void countVolumes(const FrameInputs& in, const glm::vec3& camera, GLsizei vertexCount) {
-    glBindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer().id());
+  void countVolumes(const FrameInputs& in, const glm::vec3& camera, GLsizei vertexCount, bool depthPass) {
+    glBindFramebuffer(GL_FRAMEBUFFER, count_.framebuffer().id());
     glViewport(0, 0, in.size.x, in.size.y);
-    glClearNamedFramebufferfi(target_.framebuffer().id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
-    glDisable(GL_DEPTH_TEST);  // the fragment shader does the exact "behind" test
+    const float zero = 0.0f;
+    glClearTexImage(count_.color().id(), 0, GL_RED, GL_FLOAT, &zero);
     glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
     glEnable(GL_DEPTH_CLAMP);  // no near/far clipping of faces reaching infinity
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glEnable(GL_STENCIL_TEST);
-    glStencilMask(0xFF);
-    glStencilFunc(GL_ALWAYS, 0, 0xFF);
-    // Faces behind the receiver: leaving a volume (back face) +1, entering (front) −1.
-    glStencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
-    glStencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+    // Each face adds ±1 where the fragment shader's exact test keeps it. Depth-fail: faces
+    // behind the receiver, leaving a volume (back face) +1, entering (front) −1.
+    // Depth-pass: faces in front of it, entering +1, leaving −1. Either sum is the number of
+    // volumes holding the receiver (depth-pass: when none holds the eye). Counted by
+    // blending in a float target, not by stencil increments, so that depth-pass can cull
+    // with the G-buffer's depth before the shader runs (a stencil write makes a rasterizer
+    // run the shader first): a face fragment beyond the receiver by more than the offset
+    // (a depth slope's worth of pixels plus 1024 steps of depth) cannot be in front of it,
+    // so only those that surely fail the exact test are culled. Depth-fail tests all.
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glDepthMask(GL_FALSE);  // the G-buffer's depth is only read
+    if (depthPass) {
+      glEnable(GL_DEPTH_TEST);
+      glDepthFunc(GL_LEQUAL);
+      glEnable(GL_POLYGON_OFFSET_FILL);
+      glPolygonOffset(-4.0f, -1024.0f);
+    } else {
+      glDisable(GL_DEPTH_TEST);
+    }
     countProgram_.use();
     bindReceiverInputs(countProgram_, in);
     countProgram_.set("uViewProjection", in.camera.viewProjection());
     countProgram_.set("uCameraPosition", camera);
-    countProgram_.set("uTieTolerance", 1e-5f * sceneExtent(in.scene));
+    countProgram_.set("uTieTolerance", 1e-5f * sceneExtent());
+    countProgram_.set("uDepthPass", depthPass ? 1 : 0);
     glBindVertexArray(vertexArray_.id());
     if (vertexCount > 0) glDrawArrays(GL_TRIANGLES, 0, vertexCount);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
   }
 
-  void resolve(const FrameInputs& in, const VolumeLight& light, float weight) {
-    glStencilFunc(GL_EQUAL, 0, 0xFF);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  // Adds the light's weight where the count is 0 (blended: area samples add up).
+  void resolve(const FrameInputs& in, const VisibilityTarget& out, const VolumeLight& light, float weight) {
+    glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer.id());
+    glViewport(0, 0, in.size.x, in.size.y);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE);
+    glBindTextureUnit(2, count_.color().id());
+    resolveProgram_.set("uCount", 2);
     resolveProgram_.set("uWeight", weight);
     bindReceiverInputs(resolveProgram_, in, light.position);
     resolveProgram_.set("uLightDirection", light.direction);
@@ -184,18 +245,27 @@ class ShadowVolumes final : public ShadowTechnique {
     glDisable(GL_BLEND);
   }
 
-  bool area_;
+  bool area_, depthFailOnly_;
   int samples_ = 0;
   Program countProgram_, resolveProgram_;
   VertexArray vertexArray_;
   Buffer buffer_;
-  RenderTarget target_;
+  RenderTarget count_;
   std::vector<VolumeVertex> vertices_;
-  std::vector<MeshTopology> topologies_;
-  const Scene* topologyOf_ = nullptr;
+  std::vector<VolumeMesh> meshes_;
+  glm::vec3 lo_{0}, hi_{0};  // the scene's bounds
+  glm::mat4 view_{1.0f};     // the camera's, this frame
+  float nearPlane_ = 1.0f;
+  const Scene* meshesOf_ = nullptr;
 };
 
 }  // namespace
+
+const RegisteredTechnique& depthFailGroundTruth() {
+  static const RegisteredTechnique entry{&keepTechniqueInfo(ShadowVolumes::describePoint(), TESTBED_TECHNIQUE_FAMILY),
+                                         [] { return std::make_unique<ShadowVolumes>(false, true); }};
+  return entry;
+}
 
 const RegisteredTechnique& shadowVolumeGroundTruth() {
   static const RegisteredTechnique entry{&keepTechniqueInfo(ShadowVolumes::describePoint(), TESTBED_TECHNIQUE_FAMILY),
