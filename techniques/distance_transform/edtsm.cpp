@@ -16,7 +16,7 @@ void EdtsmParameters::reflect(ParameterBinder& b) {
          "largest camera-depth difference between pixels of one surface (the paper's 2.5e-3)");
   b.integer("max_filter_radius", maxFilterRadius, 15, 0, 64, "cap on the mean filter's half width, pixels");
   b.boolean("reference", reference, false,
-            "run eq. 8 and the mean filter as full-screen draws of their own (the straightforward "
+            "run the seeds, eq. 8 and the mean filter as full-screen passes of their own (the straightforward "
             "pipeline: same output, slower; for testing)");
   rbsm.reflect(b);
 }

@@ -6,7 +6,7 @@ uniform usampler2D uTileKinds;  // per tile: bit 0 a receiver at 0, bit 1 at 1, 
 uniform int uTileReach;         // tiles to each side that the window can reach
 uniform ivec2 uScreenSize;
 
-const int kTile = 16;
+const int kTile = 32;
 
 void main() {
   const ivec2 tiles = textureSize(uTileKinds, 0);

@@ -16,7 +16,7 @@ namespace testbed::distance_transform {
 
 class FilterTiles {
  public:
-  static constexpr int kTile = 16;  // kTile of edtsm_penumbra.comp and edtsm_filter_tile.vert
+  static constexpr int kTile = 32;  // kTile of edtsm_penumbra.comp and edtsm_filter_tile.vert
 
   // Makes the kinds image (R32UI, a tile per texel: bit 0 a receiver at exactly +0, bit 1
   // at 1, bit 2 any other value) for `size` pixels, clears it and binds it at image unit

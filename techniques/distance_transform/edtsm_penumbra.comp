@@ -8,7 +8,7 @@
 layout(rg32f, binding = 0) uniform writeonly image2D uIntensity;
 layout(r32ui, binding = 1) uniform uimage2D uTileKinds;  // cleared to 0 before
 
-const int kTile = 16;  // FilterTiles::kTile
+const int kTile = 32;  // FilterTiles::kTile
 
 uint gKinds = 0u;  // this column's kinds in the current tile
 

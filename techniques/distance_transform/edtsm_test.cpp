@@ -1,5 +1,5 @@
-// EDTSM and EDTSM*: the passes and their memory, the plumbing (P = 0 and no filter give
-// RBSM's hard shadow exactly), eq. 8's sides and range, and, against the shadow-volume
+// EDTSM and EDTSM*: the passes and their memory, the fast path against the straightforward
+// pipeline (bit for bit), the plumbing (P = 0 and no filter give RBSM's hard shadow exactly), eq. 8's sides and range, and, against the shadow-volume
 // ground truth, that EDTSM* overestimates less than EDTSM (EDTSM*'s claim) and neither
 // leaks more than sm. Figures are printed for the closing note.
 // EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
