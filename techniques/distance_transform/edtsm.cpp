@@ -142,12 +142,13 @@ void EdtShadowMapping::renderFused(const FrameInputs& in, PassTimer& timer, cons
                        0, 0, in.size.x, in.size.y, 1);
     glBindTextureUnit(4, intensity_.color().id());
     filterTilesProgram_.set("uDirection", glm::ivec2(1, 0));
-    filterTiles_.draw(filterTilesProgram_, filtered_.framebuffer(), in.size, parameters_.maxFilterRadius);
+    const int radius = parameters_.maxFilterRadius;
+    filterTiles_.draw(filterTilesProgram_, filtered_.framebuffer(), in.size, glm::ivec2(radius, 0));
     glBlitNamedFramebuffer(intensity_.framebuffer().id(), out.framebuffer.id(), 0, 0, in.size.x, in.size.y, 0, 0,
                            in.size.x, in.size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     glBindTextureUnit(4, filtered_.color().id());
     filterTilesProgram_.set("uDirection", glm::ivec2(0, 1));
-    filterTiles_.draw(filterTilesProgram_, out.framebuffer, in.size, parameters_.maxFilterRadius);
+    filterTiles_.draw(filterTilesProgram_, out.framebuffer, in.size, glm::ivec2(radius));
   }
 }
 

@@ -3,7 +3,7 @@
 // some pixel of it can see, within the mean filter's largest window, receivers of more
 // than one kind or of a kind other than 0 and 1; a point off the screen otherwise.
 uniform usampler2D uTileKinds;  // per tile: bit 0 a receiver at 0, bit 1 at 1, bit 2 other
-uniform int uTileReach;         // tiles to each side that the window can reach
+uniform ivec2 uTileReach;       // tiles to each side that the window can reach, along x and y
 uniform ivec2 uScreenSize;
 
 const int kTile = 32;
@@ -12,8 +12,8 @@ void main() {
   const ivec2 tiles = textureSize(uTileKinds, 0);
   const ivec2 tile = ivec2(gl_InstanceID % tiles.x, gl_InstanceID / tiles.x);
   uint kinds = 0u;
-  for (int dy = -uTileReach; dy <= uTileReach; ++dy)
-    for (int dx = -uTileReach; dx <= uTileReach; ++dx) {
+  for (int dy = -uTileReach.y; dy <= uTileReach.y; ++dy)
+    for (int dx = -uTileReach.x; dx <= uTileReach.x; ++dx) {
       const ivec2 t = tile + ivec2(dx, dy);
       if (all(greaterThanEqual(t, ivec2(0))) && all(lessThan(t, tiles))) kinds |= texelFetch(uTileKinds, t, 0).r;
     }

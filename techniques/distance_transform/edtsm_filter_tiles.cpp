@@ -19,7 +19,7 @@ void FilterTiles::begin(glm::ivec2 size, GLuint unit) {
   glBindImageTexture(unit, kinds_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
 }
 
-void FilterTiles::draw(const Program& program, const Framebuffer& target, glm::ivec2 size, int radius) const {
+void FilterTiles::draw(const Program& program, const Framebuffer& target, glm::ivec2 size, glm::ivec2 reach) const {
   glBindFramebuffer(GL_FRAMEBUFFER, target.id());
   glViewport(0, 0, size.x, size.y);
   glDisable(GL_DEPTH_TEST);
@@ -28,7 +28,7 @@ void FilterTiles::draw(const Program& program, const Framebuffer& target, glm::i
   program.use();
   glBindTextureUnit(kKindsUnit, kinds_.id());
   program.set("uTileKinds", kKindsUnit);
-  program.set("uTileReach", (radius + kTile - 1) / kTile);
+  program.set("uTileReach", (reach + kTile - 1) / kTile);
   program.set("uScreenSize", size);
   glBindVertexArray(empty_.id());
   glDrawArraysInstanced(GL_TRIANGLES, 0, 6, tiles_.x * tiles_.y);

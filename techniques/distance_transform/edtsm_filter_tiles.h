@@ -5,7 +5,9 @@
 // every receiver in the (2 radius + 1)² box around a pixel has the same intensity, 0 or 1
 // (RBSM's hard answer, no penumbra), both averages are that value exactly: a sum of n
 // zeros or ones is exact in float, and n / n is 1. Such pixels keep the penumbra's
-// intensity, copied; the output is the same as two full-screen draws, bit for bit.
+// intensity, copied; the output is the same as two full-screen draws, bit for bit. The
+// first (row) draw needs only the row to agree: where it does, its result is the
+// intensity itself, so the second (column) draw reads the copy there unchanged.
 // EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
 // shadow mapping", Computers & Graphics 71 (2018).
 #include <glm/glm.hpp>
@@ -23,9 +25,10 @@ class FilterTiles {
   // `unit` for a shader to OR into (edtsm_penumbra.comp).
   void begin(glm::ivec2 size, GLuint unit);
   // Draws `program` (vertex stage edtsm_filter_tile.vert) into `target` over the tiles
-  // with a pixel whose box of `radius` pixels holds more than one kind, or one other than
-  // 0 and 1. The kinds must be complete (and made visible to texel fetches).
-  void draw(const Program& program, const Framebuffer& target, glm::ivec2 size, int radius) const;
+  // with a pixel whose window of `reach` pixels to each side (along x, along y) holds
+  // more than one kind, or one other than 0 and 1. The kinds must be complete (and made
+  // visible to texel fetches).
+  void draw(const Program& program, const Framebuffer& target, glm::ivec2 size, glm::ivec2 reach) const;
 
  private:
   Texture kinds_;
