@@ -15,6 +15,9 @@ void EdtsmParameters::reflect(ParameterBinder& b) {
   b.real("depth_threshold", depthThreshold, 2.5e-3, 0.0, 1.0,
          "largest camera-depth difference between pixels of one surface (the paper's 2.5e-3)");
   b.integer("max_filter_radius", maxFilterRadius, 15, 0, 64, "cap on the mean filter's half width, pixels");
+  b.boolean("reference", reference, false,
+            "run the seeds, eq. 8 and the mean filter as full-screen passes of their own (the straightforward "
+            "pipeline: same output, slower; for testing)");
   rbsm.reflect(b);
 }
 
@@ -25,7 +28,7 @@ void EdtShadowMapping::configured() {
 
 void EdtShadowMapping::allocate(glm::ivec2 size) {
   hard_.ensure({.size = size, .color = GL_RG32F});
-  seeds_.ensure({.size = size, .color = GL_R8});
+  if (parameters_.reference) seeds_.ensure({.size = size, .color = GL_R8});  // else the EDT tells them
   intensity_.ensure({.size = size, .color = GL_RG32F});
   filtered_.ensure({.size = size, .color = GL_RG32F});
 }
@@ -36,18 +39,32 @@ void EdtShadowMapping::bindScreenInputs(const Program& program, const FrameInput
   program.set("uDepthThreshold", parameters_.depthThreshold);
 }
 
+void EdtShadowMapping::bindFilter(const Program& program, const FrameInputs& in) const {
+  bindScreenInputs(program, in);
+  program.set("uFilterWidth", parameters_.filterWidth);
+  // z_screen = 1 / (2 tan(fov_y / 2)) and projection[1][1] = 1 / tan(fov_y / 2).
+  program.set("uScreenDistance", 0.5f * in.camera.projection[1][1]);
+  program.set("uCameraPosition", glm::vec3(glm::inverse(in.camera.view)[3]));
+  program.set("uMaxRadius", parameters_.maxFilterRadius);
+  program.set("uIntensity", 4);
+}
+
 void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
   if (!seedsProgram_) {
     const auto program = [](const char* key) { return Program::graphics("testbed/render/fullscreen.vert", key); };
     seedsProgram_ = program("techniques/distance_transform/edtsm_seeds.frag");
     penumbraProgram_ = program("techniques/distance_transform/edtsm_penumbra.frag");
     filterProgram_ = program("techniques/distance_transform/edtsm_mean_filter.frag");
+    seedRows_ = Program::compute("techniques/distance_transform/edtsm_seeds.comp");
+    penumbraColumns_ = Program::compute("techniques/distance_transform/edtsm_penumbra.comp");
+    filterTilesProgram_ = Program::graphics("techniques/distance_transform/edtsm_filter_tile.vert",
+                                            "techniques/distance_transform/edtsm_mean_filter.frag");
   }
   allocate(in.size);
-  const float noReceiver[4] = {0, -1, 0, 0};  // value 0, depth −1: later passes skip it
   shadowMap_.render(in, timer);
   {
     auto scope = timer.scope("rbsm-classify");
+    const float noReceiver[4] = {0, -1, 0, 0};  // value 0, depth −1: later passes skip it
     glClearNamedFramebufferfv(hard_.framebuffer().id(), GL_COLOR, 0, noReceiver);
   }
   const auto bindRbsm = [&](const Program& program) {
@@ -56,10 +73,18 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
     program.set("uImproved", improved_ ? 1 : 0);
   };
   rbsmPass_.draw(in, VisibilityTarget{hard_.framebuffer(), hard_.color()}, timer, bindRbsm, "rbsm-classify", "rbsm");
-  glBindTextureUnit(4, hard_.color().id());
+  if (parameters_.reference)
+    renderReference(in, timer, out);
+  else
+    renderFused(in, timer, out);
+  rbsm_.renderDebug(in, shadowMap_.depth(), improved_);  // untimed
+}
+
+void EdtShadowMapping::renderReference(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
   {
     auto scope = timer.scope("seeds");
     bindScreenInputs(seedsProgram_, in);
+    glBindTextureUnit(4, hard_.color().id());
     seedsProgram_.set("uHard", 4);
     screen_.draw(seedsProgram_, seeds_.framebuffer(), in.size);
   }
@@ -69,7 +94,6 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
   }
   {
     auto scope = timer.scope("penumbra");
-    glClearNamedFramebufferfv(intensity_.framebuffer().id(), GL_COLOR, 0, noReceiver);
     bindScreenInputs(penumbraProgram_, in);
     glBindTextureUnit(4, hard_.color().id());
     glBindTextureUnit(5, featureTransform_.nearest().id());
@@ -80,13 +104,8 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
   }
   {
     auto scope = timer.scope("mean-filter");
-    bindScreenInputs(filterProgram_, in);
-    filterProgram_.set("uFilterWidth", parameters_.filterWidth);
-    // z_screen = 1 / (2 tan(fov_y / 2)) and projection[1][1] = 1 / tan(fov_y / 2).
-    filterProgram_.set("uScreenDistance", 0.5f * in.camera.projection[1][1]);
-    filterProgram_.set("uCameraPosition", glm::vec3(glm::inverse(in.camera.view)[3]));
-    filterProgram_.set("uMaxRadius", parameters_.maxFilterRadius);
-    filterProgram_.set("uIntensity", 4);
+    bindFilter(filterProgram_, in);
+    const float noReceiver[4] = {0, -1, 0, 0};  // the first draw leaves these pixels alone
     glClearNamedFramebufferfv(filtered_.framebuffer().id(), GL_COLOR, 0, noReceiver);
     glBindTextureUnit(4, intensity_.color().id());
     filterProgram_.set("uDirection", glm::ivec2(1, 0));
@@ -95,7 +114,42 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
     filterProgram_.set("uDirection", glm::ivec2(0, 1));
     screen_.draw(filterProgram_, out.framebuffer, in.size);
   }
-  rbsm_.renderDebug(in, shadowMap_.depth(), improved_);  // untimed
+}
+
+void EdtShadowMapping::renderFused(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
+  {
+    // The seeds inside the feature transform's row pass (edtsm_seeds.comp), eq. 8 inside
+    // its column pass (edtsm_penumbra.comp), which also gathers the mean filter's tiles.
+    auto scope = timer.scope("edt");
+    glBindTextureUnit(4, hard_.color().id());
+    bindScreenInputs(seedRows_, in);
+    seedRows_.set("uHard", 4);
+    bindScreenInputs(penumbraColumns_, in);
+    penumbraColumns_.set("uHard", 4);
+    penumbraColumns_.set("uPenumbra", parameters_.penumbra);
+    glBindImageTexture(0, intensity_.color().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+    filterTiles_.begin(in.size, 1);
+    featureTransform_.run(in.size, seedRows_, penumbraColumns_);
+    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+    glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+  }
+  {
+    // The filter runs on the tiles where it can change a pixel; elsewhere each direction's
+    // result is the penumbra's intensity (edtsm_filter_tiles.h), copied first.
+    auto scope = timer.scope("mean-filter");
+    bindFilter(filterTilesProgram_, in);
+    glCopyImageSubData(intensity_.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, filtered_.color().id(), GL_TEXTURE_2D, 0, 0,
+                       0, 0, in.size.x, in.size.y, 1);
+    glBindTextureUnit(4, intensity_.color().id());
+    filterTilesProgram_.set("uDirection", glm::ivec2(1, 0));
+    const int radius = parameters_.maxFilterRadius;
+    filterTiles_.draw(filterTilesProgram_, filtered_.framebuffer(), in.size, glm::ivec2(radius, 0));
+    glBlitNamedFramebuffer(intensity_.framebuffer().id(), out.framebuffer.id(), 0, 0, in.size.x, in.size.y, 0, 0,
+                           in.size.x, in.size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindTextureUnit(4, filtered_.color().id());
+    filterTilesProgram_.set("uDirection", glm::ivec2(0, 1));
+    filterTiles_.draw(filterTilesProgram_, out.framebuffer, in.size, glm::ivec2(radius));
+  }
 }
 
 namespace {

@@ -4,13 +4,19 @@
 //   shadow-map   the shared shadow map
 //   rbsm         single-pass SMSR's hard visibility (conservative for edtsm, improved for
 //                edtsm-star) and the camera depth into a screen texture
-//   seeds        receivers with an 8-neighbour on the same surface of the other visibility
-//   edt          the exact screen-space feature transform: each pixel's nearest seed
-//   penumbra     eq. 8 on the world-space distance to that seed
-//   mean-filter  the edge-aware separable mean filter (eqs. 9–10), two draws
+//   edt          the seeds (receivers with an 8-neighbour on the same surface of the other
+//                visibility), the exact screen-space feature transform (each pixel's
+//                nearest seed) and eq. 8 on the world-space distance to that seed: the
+//                transform's row pass tells the seeds, its column pass applies eq. 8 as it
+//                finds each nearest seed (edtsm_seeds.comp, edtsm_penumbra.comp)
+//   mean-filter  the edge-aware separable mean filter (eqs. 9–10), two draws over the
+//                tiles where it can change a pixel (edtsm_filter_tiles.h)
+// With `reference` set, the straightforward pipeline, same output: a full-screen pass per
+// step (`seeds`, `edt`, `penumbra`), both filter draws over the whole screen.
 // EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
 // shadow mapping", Computers & Graphics 71 (2018).
 // GI 2017: Macedo & Apolinário, "Euclidean Distance Transform Shadow Mapping", Graphics Interface 2017.
+#include "techniques/distance_transform/edtsm_filter_tiles.h"
 #include "techniques/distance_transform/feature_transform.h"
 #include "techniques/revectorization/revectorization_technique.h"
 #include "testbed/gl/render_target.h"
@@ -21,10 +27,11 @@
 
 namespace testbed::distance_transform {
 
-// penumbra, filter_width, depth_threshold, max_filter_radius, then RBSM's parameters.
+// penumbra, filter_width, depth_threshold, max_filter_radius, reference, then RBSM's parameters.
 struct EdtsmParameters {
   float penumbra, filterWidth, depthThreshold;
   int maxFilterRadius;
+  bool reference;
   revectorization::CommonParameters rbsm;
   void reflect(ParameterBinder& b);
 };
@@ -42,14 +49,21 @@ class EdtShadowMapping : public WithParameters<EdtsmParameters> {
   void allocate(glm::ivec2 size);
   // Receivers, camera depth and the edge-awareness threshold of edtsm_screen.glsl.
   void bindScreenInputs(const Program& program, const FrameInputs& in) const;
+  // The mean filter's uniforms; its input is bound at unit 4.
+  void bindFilter(const Program& program, const FrameInputs& in) const;
+  // What follows the seeds: the straightforward passes, or the fused, tiled ones.
+  void renderReference(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out);
+  void renderFused(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out);
 
   bool improved_;
   revectorization::Common rbsm_;
   ShadowMapPass shadowMap_;
   ScreenPass screen_;
   FeatureTransformPass featureTransform_;
+  FilterTiles filterTiles_;
   revectorization::EdgeSplitPass rbsmPass_{"techniques/distance_transform/edtsm_rbsm.frag"};
-  Program seedsProgram_, penumbraProgram_, filterProgram_;
+  Program seedsProgram_, penumbraProgram_, filterProgram_;  // the reference pipeline
+  Program seedRows_, penumbraColumns_, filterTilesProgram_;
   RenderTarget hard_, seeds_, intensity_, filtered_;
 };
 

@@ -30,8 +30,12 @@ void main() {
   int radius = min(int(floor(0.5 * widthPx)), uMaxRadius);
   float sum = 0.0;
   float count = 0.0;
-  for (int i = -radius; i <= radius; ++i) {
-    vec2 tap = fetchWithDepth(uIntensity, pixel + i * uDirection);
+  // Taps off the screen count as depth −1 (fetchWithDepth): the loop leaves them out.
+  const int along = pixel.x * uDirection.x + pixel.y * uDirection.y;
+  const ivec2 size = textureSize(uIntensity, 0);
+  const int first = max(-radius, -along), last = min(radius, size.x * uDirection.x + size.y * uDirection.y - 1 - along);
+  for (int i = first; i <= last; ++i) {
+    vec2 tap = texelFetch(uIntensity, pixel + i * uDirection, 0).xy;
     if (tap.y < 0.0 || !sameSurface(centre.y, tap.y)) continue;  // −1: off the receivers or facing away
     sum += tap.x;
     count += 1.0;

@@ -1,5 +1,5 @@
-// EDTSM and EDTSM*: the passes and their memory, the plumbing (P = 0 and no filter give
-// RBSM's hard shadow exactly), eq. 8's sides and range, and, against the shadow-volume
+// EDTSM and EDTSM*: the passes and their memory, the fast path against the straightforward
+// pipeline (bit for bit), the plumbing (P = 0 and no filter give RBSM's hard shadow exactly), eq. 8's sides and range, and, against the shadow-volume
 // ground truth, that EDTSM* overestimates less than EDTSM (EDTSM*'s claim) and neither
 // leaks more than sm. Figures are printed for the closing note.
 // EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <map>
 #include <string>
@@ -37,10 +38,36 @@ TEST_F(Edtsm, PassesAndMemory) {
   const TechniqueRun sm = run(runner, "sm");
   for (const std::string id : {"edtsm", "edtsm-star"}) {
     const TechniqueRun r = run(runner, id);
-    EXPECT_EQ(r.times.order,
+    EXPECT_EQ(r.times.order, (std::vector<std::string>{"shadow-map", "rbsm-classify", "rbsm", "edt", "mean-filter"}));
+    EXPECT_EQ(run(runner, id, {{"reference", "true"}}).times.order,
               (std::vector<std::string>{"shadow-map", "rbsm-classify", "rbsm", "seeds", "edt", "penumbra", "mean-filter"}));
-    // An R8 and three RG32F screen textures at least, plus the feature transform's own.
+    // Three RG32F screen textures at least, plus the feature transform's own.
     EXPECT_GT(r.memoryBytes, sm.memoryBytes + 320u * 180u * (1 + 8 + 8 + 8));
+  }
+}
+
+// The fast path (eq. 8 inside the feature transform's column pass, the mean filter drawn
+// on the tiles where it can change a pixel) against the straightforward one (`reference`:
+// a draw per step over the whole screen), bit for bit: every bundled scene, windows wider
+// than a tile, narrow ones, wide penumbrae, no penumbra, no filter.
+TEST_F(Edtsm, FastPathMatchesTheReferencePipelineBitForBit) {
+  const std::vector<Assignments> variants{{},
+                                          {{"filter_width", "4"}, {"max_filter_radius", "40"}},
+                                          {{"penumbra", "4"}, {"max_filter_radius", "3"}},
+                                          {{"penumbra", "0"}},
+                                          {{"filter_width", "0"}}};
+  for (const std::string name : {"bunny", "wall", "fence", "dragon_sun", "stacked_occluders"}) {
+    const Scene scene = test::bundledScene(name);
+    FrameRunner runner(scene, small());
+    for (const std::string id : {"edtsm", "edtsm-star"})
+      for (const Assignments& set : variants) {
+        Assignments reference = set;
+        reference["reference"] = "true";
+        const ImageF fast = run(runner, id, set).visibility, expected = run(runner, id, reference).visibility;
+        ASSERT_EQ(fast.pixels.size(), expected.pixels.size());
+        EXPECT_EQ(std::memcmp(fast.pixels.data(), expected.pixels.data(), fast.pixels.size() * sizeof(float)), 0)
+            << name << " " << id << " variant " << (&set - variants.data());
+      }
   }
 }
 

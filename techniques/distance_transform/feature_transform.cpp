@@ -14,49 +14,67 @@ GLuint groupsFor(int invocations) { return GLuint((invocations + kGroupSize - 1)
 }  // namespace
 
 void FeatureTransformPass::run(const Texture& seeds, glm::ivec2 size) {
-  if (size.x <= 0 || size.y <= 0 || size.x > kMaxExtent || size.y > kMaxExtent)
-    throw GlError("feature transform: size " + std::to_string(size.x) + "x" + std::to_string(size.y) +
-                  " out of range (1 to " + std::to_string(kMaxExtent) + " a side)");
+  prepare(size);
   if (size.x > seeds.width() || size.y > seeds.height())
     throw GlError("feature transform: the seed texture is smaller than the requested size");
   if (!rowsProgram_) {
     rowsProgram_ = Program::compute("techniques/distance_transform/feature_transform_rows.comp");
     columnsProgram_ = Program::compute("techniques/distance_transform/feature_transform_columns.comp");
   }
+  if (nearest_.width() != size.x || nearest_.height() != size.y) nearest_ = Texture::create2D(GL_RG32I, size.x, size.y);
+  // The seeds may have just been written by an image store.
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  glBindTextureUnit(0, seeds.id());
+  rowsProgram_.use();
+  rowsProgram_.set("uSeeds", 0);
+  rows(rowsProgram_);
+  glBindImageTexture(0, nearest_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32I);
+  columns(columnsProgram_);
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32I);
+  checkGlError("feature transform");
+}
+
+void FeatureTransformPass::run(glm::ivec2 size, const Program& rowsProgram, const Program& columnsProgram) {
+  prepare(size);
+  rows(rowsProgram);
+  columns(columnsProgram);
+  checkGlError("feature transform");
+}
+
+void FeatureTransformPass::prepare(glm::ivec2 size) {
+  if (size.x <= 0 || size.y <= 0 || size.x > kMaxExtent || size.y > kMaxExtent)
+    throw GlError("feature transform: size " + std::to_string(size.x) + "x" + std::to_string(size.y) +
+                  " out of range (1 to " + std::to_string(kMaxExtent) + " a side)");
   if (size != size_) {
     // Allocated here, not at construction, so they are booked in the ledger current while
     // the technique renders.
     const std::size_t pixels = std::size_t(size.x) * std::size_t(size.y);
-    nearest_ = Texture::create2D(GL_RG32I, size.x, size.y);
     rowNearest_ = Buffer::create(pixels * sizeof(GLint), nullptr);
     envelope_ = Buffer::create(pixels * 2 * sizeof(GLint), nullptr);
     size_ = size;
   }
+}
 
-  // The seeds may have just been written by an image store.
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-  rowsProgram_.use();
-  glBindTextureUnit(0, seeds.id());
-  rowsProgram_.set("uSeeds", 0);
-  rowsProgram_.set("uSize", size);
+void FeatureTransformPass::rows(const Program& rowsProgram) {
+  rowsProgram.use();
+  rowsProgram.set("uSize", size_);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, rowNearest_.id());
-  glDispatchCompute(groupsFor(size.y), 1, 1);
+  glDispatchCompute(groupsFor(size_.y), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
 
-  columnsProgram_.use();
-  columnsProgram_.set("uSize", size);
-  glBindImageTexture(0, nearest_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32I);
+void FeatureTransformPass::columns(const Program& columnsProgram) {
+  columnsProgram.use();
+  columnsProgram.set("uSize", size_);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, rowNearest_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, envelope_.id());
-  glDispatchCompute(groupsFor(size.x), 1, 1);
-  // Whatever reads the result next: a texel fetch, an image load or a read-back.
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                  GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
-
-  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32I);
+  glDispatchCompute(groupsFor(size_.x), 1, 1);
+  // Whatever reads the result next: a texel fetch, an image load, a copy, a blit or a
+  // read-back.
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                  GL_FRAMEBUFFER_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
-  checkGlError("feature transform");
 }
 
 std::vector<glm::ivec2> FeatureTransformPass::readNearest() const {

@@ -27,9 +27,15 @@ class FeatureTransformPass {
   // only its texels [0, size) are read. Allocates (and books in the current
   // GpuMemoryLedger) the output and scratch buffers when `size` changes.
   void run(const Texture& seeds, glm::ivec2 size);
+  // The same transform with both passes the caller's: `rows`, a compute program built on
+  // feature_transform_row_sweep.glsl that tells the seeds itself, and `columns`, one built
+  // on feature_transform_envelope.glsl that consumes each pixel's nearest seed itself, so
+  // nearest() is not written. The caller binds their textures, images and uniforms; uSize
+  // and the buffers are bound here, and image writes are made visible as run()'s are.
+  void run(glm::ivec2 size, const Program& rows, const Program& columns);
 
   // RG32I, `size` texels: (x, y) texel coordinates of the nearest seed, or (-1, -1). Valid
-  // after run(); its writes are made visible to texel fetches, image loads and read-backs.
+  // after the first run(); its writes are made visible to texel fetches, image loads and read-backs.
   const Texture& nearest() const { return nearest_; }
   glm::ivec2 size() const { return size_; }
 
@@ -37,6 +43,11 @@ class FeatureTransformPass {
   std::vector<glm::ivec2> readNearest() const;
 
  private:
+  // Checks `size` and (re)allocates the scratch buffers for it.
+  void prepare(glm::ivec2 size);
+  void rows(const Program& rows);        // pass 1 into rowNearest_
+  void columns(const Program& columns);  // pass 2 from it
+
   Program rowsProgram_, columnsProgram_;
   glm::ivec2 size_{0};
   Texture nearest_;

@@ -1,0 +1,64 @@
+// Feature transform, pass 2 (feature_transform.h): one invocation per column takes the
+// lower envelope of the parabolas f_i(y) = (y - i)² + g(i)² over the rows i, g(i) being
+// the column distance to row i's nearest seed (pass 1), as Meijster et al. 2000 do. Rows
+// without a seed get g = uSize.x + uSize.y, farther than any real seed, so they never win
+// while a real seed exists and no special case is needed. Everything is int32 and exact:
+// the intersection of two parabolas is floored by integer division, which is all the
+// envelope needs since it is only ever evaluated at integer rows.
+//
+// The including shader defines, before including this file,
+//   void featureTransformStore(ivec2 pixel, ivec2 seed)
+// given each pixel's nearest seed, (-1, -1) when the image has none, for the rows of one
+// column from the last to the first; its main() calls featureTransformColumn().
+layout(local_size_x = 64) in;
+
+uniform ivec2 uSize;
+layout(std430, binding = 0) readonly buffer RowNearest { int rowNearest[]; };
+// Per column, a stack of (row i of a parabola, first row where it is the minimum); entry k
+// of column x at k * width + x, so neighbouring invocations touch neighbouring memory.
+layout(std430, binding = 1) buffer Envelope { ivec2 envelope[]; };
+
+int gColumn;  // this invocation's column
+
+int g(int i) {
+  const int seedX = rowNearest[i * uSize.x + gColumn];
+  return seedX < 0 ? uSize.x + uSize.y : abs(gColumn - seedX);
+}
+int f(int y, int i, int gi) { return (y - i) * (y - i) + gi * gi; }
+
+void featureTransformColumn() {
+  gColumn = int(gl_GlobalInvocationID.x);
+  if (gColumn >= uSize.x) return;
+  // Build: the stack holds the envelope's parabolas in row order, each with the first row
+  // where it is the minimum; the top one wins up to the last row seen.
+  int top = 0;
+  envelope[gColumn] = ivec2(0, 0);
+  for (int u = 1; u < uSize.y; ++u) {
+    const int gu = g(u);
+    // Pop parabolas that u beats (strictly) where they start to win.
+    while (top >= 0) {
+      const ivec2 e = envelope[top * uSize.x + gColumn];
+      if (f(e.y, e.x, g(e.x)) <= f(e.y, u, gu)) break;
+      --top;
+    }
+    if (top < 0) {
+      top = 0;
+      envelope[gColumn] = ivec2(u, 0);
+    } else {
+      // u wins strictly from floor(sep) + 1 on, sep = ((u² - i²) + (g(u)² - g(i)²)) / 2(u - i);
+      // the top still wins (or ties) at its own start >= 0, so the numerator is >= 0 and
+      // integer division floors.
+      const int i = envelope[top * uSize.x + gColumn].x;
+      const int gi = g(i);
+      const int start = 1 + ((u * u - i * i) + (gu * gu - gi * gi)) / (2 * (u - i));
+      if (start < uSize.y) envelope[(++top) * uSize.x + gColumn] = ivec2(u, start);
+    }
+  }
+  // Walk the rows from the last to the first, popping a parabola once past its start.
+  for (int y = uSize.y - 1; y >= 0; --y) {
+    const ivec2 e = envelope[top * uSize.x + gColumn];
+    const int seedX = rowNearest[e.x * uSize.x + gColumn];
+    featureTransformStore(ivec2(gColumn, y), seedX < 0 ? ivec2(-1) : ivec2(seedX, e.x));
+    if (y == e.y) --top;
+  }
+}
