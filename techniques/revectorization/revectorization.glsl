@@ -135,10 +135,50 @@ struct RvSample {
   vec2 p;       // its position inside the texel
 };
 
+// The stored depths of texel t and its 4 neighbours from two gathers at t's lower-left
+// and upper-right corners (each returns the 2×2 block around its corner; a corner is half
+// a texel from every texel centre, so the block is the same under any rounding of the
+// coordinate). A gather without compare mode returns the stored values, the very ones
+// texelFetch reads; outside the map the border depth 0, as the nearest lookup gets it.
+// Gather order (GL 4.5 §8.14.2): (i0,j1), (i1,j1), (i1,j0), (i0,j0).
+struct RvCross {
+  float centre;
+  vec4 neighbours;  // left, right, bottom, top
+};
+
+RvCross rvGatherCross(ivec2 t) {
+  vec2 texel = 1.0 / vec2(uShadowMapSize);
+  vec4 lowerLeft = textureGather(uShadowMap, vec2(t) * texel);       // left, centre, bottom, ·
+  vec4 upperRight = textureGather(uShadowMap, vec2(t + 1) * texel);  // top, ·, right, centre
+  return RvCross(lowerLeft.y, vec4(lowerLeft.x, upperRight.z, lowerLeft.z, upperRight.x));
+}
+
 // The part of rvSample every pixel needs: shadow test, discontinuity and whether the texel
 // is an edge to traverse (`edge`); the ONDS is left at "straight run". `bothSides` false:
 // only lit texels (entering discontinuities) are edges, as single-pass SMSR has it.
+// The same as rvClassifyFetched (one texelFetch per texel), from two gathers.
 RvSample rvClassify(vec2 uv, float z, bool bothSides) {
+  RvSample r;
+  vec2 t = uv * vec2(uShadowMapSize);
+  r.texel = ivec2(floor(t));
+  r.p = t - floor(t);
+  r.x = RvAxis(1.0, RV_NO_END);
+  r.y = RvAxis(1.0, RV_NO_END);
+  RvCross c = rvGatherCross(r.texel);
+  r.s = rvTest(z, c.centre);
+  // |test − s| per neighbour, 0 outside the map (see the conventions).
+  bvec4 inside = bvec4(r.texel.x > 0, r.texel.x + 1 < uShadowMapSize.x, r.texel.y > 0, r.texel.y + 1 < uShadowMapSize.y);
+  vec4 tests = vec4(lessThanEqual(vec4(z - uBias), c.neighbours));
+  r.d = mix(vec4(0.0), abs(tests - r.s), inside);
+  // No edge outside the map, nor on the shadowed side unless asked for.
+  if (!rvInsideMap(r.texel) || (r.s == 0.0 && !bothSides)) r.d = vec4(0.0);
+  r.edge = r.d != vec4(0.0);
+  return r;
+}
+
+// rvClassify the straightforward way, one texelFetch per texel (the unit tests compare
+// the two).
+RvSample rvClassifyFetched(vec2 uv, float z, bool bothSides) {
   RvSample r;
   vec2 t = uv * vec2(uShadowMapSize);
   r.texel = ivec2(floor(t));
@@ -147,8 +187,7 @@ RvSample rvClassify(vec2 uv, float z, bool bothSides) {
   r.d = vec4(0.0);
   r.x = RvAxis(1.0, RV_NO_END);
   r.y = RvAxis(1.0, RV_NO_END);
-  // Outside the map the border depth 0 answers, as shadowTest's lookup gets it (one
-  // lookup either way: a shader runs both sides of a branch on some rasterizers).
+  // Outside the map the border depth 0 answers, as shadowTest's lookup gets it.
   bool inside = rvInsideMap(r.texel);
   r.s = rvTest(z, inside ? rvStoredDepth(r.texel) : 0.0);
   if (!inside) return r;  // no edge outside the map

@@ -26,6 +26,7 @@ constexpr float kOccluder = 0.2f, kReceiver = 0.5f;
 enum Function {
   kShadowTest = 0, kSmsr = 1, kRsmss = 2, kRpcfSmsr = 3, kRpcfRsmss = 4,
   kRpcfSmsrScreen = 5, kRpcfRsmssScreen = 6,  // as the screen pass computes them
+  kClassify = 7, kClassifyFetched = 8,         // rvClassify's s, d, edge (packed), two ways
 };
 
 struct Options {
@@ -368,6 +369,26 @@ TEST(RevectorizationGlsl, RsmssValuesAreInTheUnitInterval) {
     const auto one = p.run(kRsmss, points, {.kernel = 1}), three = p.run(kRpcfRsmss, points, {.kernel = 3});
     EXPECT_EQ(outsideTheUnitInterval(one) + outsideTheUnitInterval(three), 0);
     EXPECT_GT(strictlyBetween(one) + strictlyBetween(three), 0);
+  });
+}
+
+// rvClassify's two gathers give the shadow test, discontinuity and edge flag that one
+// texelFetch per texel gives, inside the map, on its border texels and outside it, for
+// both sides.
+TEST(RevectorizationGlsl, GatheredClassificationEqualsFetched) {
+  Probe& p = probe();
+  std::vector<glm::vec2> points = grid(0, 0, kSize, kSize);
+  for (const float outside : {-0.6f, -0.1f, kSize + 0.1f, kSize + 0.6f})
+    for (int i = 0; i < kSize * 4; ++i) {
+      points.emplace_back(outside, i * 0.25f + 0.1f);
+      points.emplace_back(i * 0.25f + 0.1f, outside);
+    }
+  forEachStaircase(p, [&](const Edge&) {
+    for (const bool bothSides : {false, true}) {
+      const auto gathered = p.run(kClassify, points, {.improved = bothSides});
+      EXPECT_EQ(gathered, p.run(kClassifyFetched, points, {.improved = bothSides}));
+      EXPECT_GT(std::count_if(gathered.begin(), gathered.end(), [](float v) { return v >= 32.0f; }), 0);
+    }
   });
 }
 
