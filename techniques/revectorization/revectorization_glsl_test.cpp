@@ -27,12 +27,14 @@ enum Function {
   kShadowTest = 0, kSmsr = 1, kRsmss = 2, kRpcfSmsr = 3, kRpcfRsmss = 4,
   kRpcfSmsrScreen = 5, kRpcfRsmssScreen = 6,  // as the screen pass computes them
   kClassify = 7, kClassifyFetched = 8,         // rvClassify's s, d, edge (packed), two ways
+  kBlockRow = 9, kFetchedRow = 10,             // RPCF's row masks (packed), two ways
 };
 
 struct Options {
   bool improved = false;
   int maxSearch = 16;
   int kernel = 1;
+  int row = 0;  // kBlockRow, kFetchedRow: the block's row 0 … k + 1
 };
 
 // occluded(x, y) in texel units (x, y continuous): the analytic occluder.
@@ -71,6 +73,7 @@ class Probe {
     program_.set("uBias", 0.0f);
     program_.set("uImproved", o.improved ? 1 : 0);
     program_.set("uKernel", o.kernel);
+    program_.set("uRow", o.row);
     program_.set("uFunction", int(function));
     program_.set("uCount", int(samples.size()));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
@@ -388,6 +391,30 @@ TEST(RevectorizationGlsl, GatheredClassificationEqualsFetched) {
       const auto gathered = p.run(kClassify, points, {.improved = bothSides});
       EXPECT_EQ(gathered, p.run(kClassifyFetched, points, {.improved = bothSides}));
       EXPECT_GT(std::count_if(gathered.begin(), gathered.end(), [](float v) { return v >= 32.0f; }), 0);
+    }
+  });
+}
+
+// RPCF's row masks from gathers (rpcfBlockTests) are the per-texel fetches' (rpcfRowTests)
+// on every row of the block and its rim, for blocks inside the map.
+TEST(RevectorizationGlsl, GatheredRpcfRowsEqualFetched) {
+  Probe& p = probe();
+  forEachStaircase(p, [&](const Edge&) {
+    for (const int k : {1, 3, 7}) {
+      SCOPED_TRACE("kernel " + std::to_string(k));
+      const int margin = k / 2 + 1;
+      std::vector<glm::vec2> points;  // one receiver per texel whose block lies inside
+      for (int y = margin; y < kSize - margin; ++y)
+        for (int x = margin; x < kSize - margin; ++x) points.emplace_back(x + 0.37f, y + 0.61f);
+      int partial = 0;
+      for (int row = 0; row < k + 2; ++row) {
+        const Options o{.kernel = k, .row = row};
+        const auto gathered = p.run(kBlockRow, points, o);
+        EXPECT_EQ(gathered, p.run(kFetchedRow, points, o)) << "row " << row;
+        const float all = float((1 << (k + 2)) - 1);
+        partial += int(std::count_if(gathered.begin(), gathered.end(), [&](float v) { return v > 0.0f && v < all; }));
+      }
+      EXPECT_GT(partial, 0);  // rows that straddle the edge
     }
   });
 }
