@@ -197,11 +197,14 @@ RvSample rvClassifyFetched(vec2 uv, float z, bool bothSides) {
   return r;
 }
 
-// Shadow test, discontinuity and (for edge texels) the ONDS of both axes.
-RvSample rvSample(vec2 uv, float z, bool bothSides) {
-  RvSample r = rvClassify(uv, z, bothSides);
+// The ONDS of both axes of a classified sample that is an edge (others are returned as
+// they are).
+RvSample rvTraverse(RvSample r, float z) {
   if (!r.edge) return r;
   r.x = rvAxis(rvComputeRD(r.texel, ivec2(-1, 0), z, r.s, r.d), rvComputeRD(r.texel, ivec2(1, 0), z, r.s, r.d), r.p.x);
   r.y = rvAxis(rvComputeRD(r.texel, ivec2(0, -1), z, r.s, r.d), rvComputeRD(r.texel, ivec2(0, 1), z, r.s, r.d), r.p.y);
   return r;
 }
+
+// Shadow test, discontinuity and (for edge texels) the ONDS of both axes.
+RvSample rvSample(vec2 uv, float z, bool bothSides) { return rvTraverse(rvClassify(uv, z, bothSides), z); }

@@ -419,6 +419,25 @@ TEST(RevectorizationGlsl, GatheredRpcfRowsEqualFetched) {
   });
 }
 
+// The screen pass's RPCF (classified from the row masks, else the edge taps only, each
+// classified from the masks, or by rvClassify where the block leaves the map) gives the
+// plain k×k loop's very number, on the whole map and beyond its border.
+TEST(RevectorizationGlsl, RpcfScreenPassEqualsThePlainLoop) {
+  Probe& p = probe();
+  std::vector<glm::vec2> points;
+  for (int y = -2; y < kSize + 2; ++y)
+    for (int x = -2; x < kSize + 2; ++x) points.emplace_back(x + 0.37f, y + 0.61f);
+  forEachStaircase(p, [&](const Edge&) {
+    for (const int k : {3, 5}) {
+      SCOPED_TRACE("kernel " + std::to_string(k));
+      for (const bool improved : {false, true})
+        EXPECT_EQ(p.run(kRpcfSmsrScreen, points, {.improved = improved, .kernel = k}),
+                  p.run(kRpcfSmsr, points, {.improved = improved, .kernel = k}));
+      EXPECT_EQ(p.run(kRpcfRsmssScreen, points, {.kernel = k}), p.run(kRpcfRsmss, points, {.kernel = k}));
+    }
+  });
+}
+
 // RPCF with a 1×1 kernel is its base function bit for bit (eqs. 2 and 3).
 TEST(RevectorizationGlsl, RpcfWithKernelOneEqualsItsBase) {
   Probe& p = probe();
