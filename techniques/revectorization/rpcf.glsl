@@ -145,28 +145,6 @@ RpcfTaps rpcfBeginTaps(vec2 uv, float depth, bool bothSides) {
   return w;
 }
 
-// rvClassify of tap `tap` of row w.y, from the row masks of a regular block: its texel is
-// centre + (tap − h, y) and its neighbours inside the map, so its test and its 4-neighbour
-// discontinuity are bits of the masks; only the sub-texel position is computed, from the
-// tap's uv as rvClassify does. The edge taps handed out are edges of the sides traversed.
-RvSample rpcfTapFromMasks(RpcfTaps w, int tap) {
-  int i = w.y + uKernel / 2 + 1;
-  uvec2 row = w.rows[i];
-  uint bit = 1u << uint(tap);
-  uint left = (row.x << 1u) | (row.y & 1u), right = (row.x >> 1u) | ((row.y >> 1u) << uint(uKernel - 1));
-  RvSample r;
-  vec2 t = w.tapUv * vec2(uShadowMapSize);
-  r.texel = ivec2(floor(t));
-  r.p = t - floor(t);
-  r.x = RvAxis(1.0, RV_NO_END);
-  r.y = RvAxis(1.0, RV_NO_END);
-  r.s = (row.x & bit) != 0u ? 1.0 : 0.0;
-  vec4 neighbours = vec4(bvec4((left & bit) != 0u, (right & bit) != 0u, (w.rows[i - 1].x & bit) != 0u, (w.rows[i + 1].x & bit) != 0u));
-  r.d = abs(neighbours - r.s);
-  r.edge = true;
-  return r;
-}
-
 // Adds the row's taps before tap `until` (exclusive) that are no edges.
 void rpcfAddTests(inout RpcfTaps w, int until) {
   uint taps = w.rows[w.y + uKernel / 2 + 1].x;
@@ -189,10 +167,9 @@ bool rpcfNextEdgeTap(inout RpcfTaps w) {
   rpcfAddTests(w, tap);
   w.next = tap + 1;
   w.tapUv = kernelTapUv(w.uv, tap - h, w.y);
-  w.tap = rpcfTapFromMasks(w, tap);
-  // Where the block is not regular the masks do not describe the taps. A loop, not an if:
-  // llvmpipe runs both sides of an if for every lane, but skips a loop no lane enters.
-  for (bool irregular = !w.regular; irregular; irregular = false) w.tap = rvClassify(w.tapUv, w.depth, w.bothSides);
+  // Classified by its own gathers, not from the masks: the traversal needs the stored
+  // depths of its cross (RvSample.cross), and an irregular block's masks say nothing.
+  w.tap = rvClassify(w.tapUv, w.depth, w.bothSides);
   return true;
 }
 
