@@ -91,8 +91,9 @@ uint rpcfRowEdges(uint below, uvec2 row, uint above, bool bothSides) {
 // True, with the filtered v, where no tap's texel is an edge of the sides the variant
 // traverses (`bothSides`); false sends the pixel to the edge draw. The taps' k×k block and
 // its one-texel rim are tested once, as row masks shared by neighbouring taps
-// (rpcfBlockTests: (k+3)²/4 gathers, not 5k² fetches). Taps that are not edges are their shadow tests, 0 or 1, whose sum is
-// an exact integer in any order, so v is the very number the visibility functions give.
+// (rpcfBlockTests: (k+3)²/4 gathers, not 5k² fetches). Taps that are not edges are their
+// shadow tests, 0 or 1, whose sum is an exact integer in any order, so v is the very
+// number the visibility functions give.
 bool rpcfClassify(vec2 uv, float depth, bool bothSides, out float v) {
   ivec2 centre = ivec2(floor(uv * vec2(uShadowMapSize)));
   v = 0.0;
