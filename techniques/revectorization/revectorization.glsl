@@ -68,14 +68,17 @@ vec3 rvCompress(vec4 d, float s) {
 // ε before the test; as in the authors' code the lowering accumulates along the walk.
 // Each texel is fetched once: the neighbour behind a step is the previous texel and the
 // one ahead is the next step's texel, so a step fetches the one ahead and the two beside
-// (3 fetches, not 5); the tests themselves are redone with the current z, as before.
-int rvComputeRD(ivec2 origin, ivec2 dir, float z, float s, vec4 dOrigin) {
+// (3 fetches, not 5), and the first step's texel comes with the origin's classification;
+// the tests themselves are redone with the current z, as before.
+// storedOrigin and storedFirst are the stored depths of the origin and of its neighbour
+// origin + dir (read by the caller's classification; storedFirst unread outside the map).
+int rvComputeRD(ivec2 origin, ivec2 dir, float z, float s, vec4 dOrigin, float storedOrigin, float storedFirst) {
   ivec2 beside = abs(dir.yx);  // the perpendicular axis, towards +
   bool towardsPositive = dir.x + dir.y > 0;
   ivec2 t = origin + dir;
   if (!rvInsideMap(t)) return -1;
-  float storedBehind = rvStoredDepth(origin);
-  float stored = rvStoredDepth(t);
+  float storedBehind = storedOrigin;
+  float stored = storedFirst;
   int n = 1;
   for (int i = 0; i < uMaxSearch; ++i) {
     if (!rvInsideMap(t)) return -n;
@@ -126,19 +129,62 @@ RvAxis rvAxis(int toNeg, int toPos, float p) {
   return a;
 }
 
-struct RvSample {
-  float s;      // shadow test of the sample
-  vec4 d;       // its discontinuity
-  bool edge;    // traversed: an edge texel of a side the caller asked for
-  RvAxis x, y;  // ONDS along the map's x and y axes (valid when edge)
-  ivec2 texel;  // the sample's texel
-  vec2 p;       // its position inside the texel
+// The stored depths of texel t and its 4 neighbours from two gathers at t's lower-left
+// and upper-right corners (each returns the 2×2 block around its corner; a corner is half
+// a texel from every texel centre, so the block is the same under any rounding of the
+// coordinate). A gather without compare mode returns the stored values, the very ones
+// texelFetch reads; outside the map the border depth 0, as the nearest lookup gets it.
+// Gather order (GL 4.5 §8.14.2): (i0,j1), (i1,j1), (i1,j0), (i0,j0).
+struct RvCross {
+  float centre;
+  vec4 neighbours;  // left, right, bottom, top
 };
+
+RvCross rvGatherCross(ivec2 t) {
+  vec2 texel = 1.0 / vec2(uShadowMapSize);
+  vec4 lowerLeft = textureGather(uShadowMap, vec2(t) * texel);       // left, centre, bottom, ·
+  vec4 upperRight = textureGather(uShadowMap, vec2(t + 1) * texel);  // top, ·, right, centre
+  return RvCross(lowerLeft.y, vec4(lowerLeft.x, upperRight.z, lowerLeft.z, upperRight.x));
+}
+
+struct RvSample {
+  float s;        // shadow test of the sample
+  vec4 d;         // its discontinuity
+  bool edge;      // traversed: an edge texel of a side the caller asked for
+  RvAxis x, y;    // ONDS along the map's x and y axes (valid when edge)
+  ivec2 texel;    // the sample's texel
+  vec2 p;         // its position inside the texel
+  RvCross cross;  // stored depths of the texel and its neighbours (rvClassify)
+};
+
 
 // The part of rvSample every pixel needs: shadow test, discontinuity and whether the texel
 // is an edge to traverse (`edge`); the ONDS is left at "straight run". `bothSides` false:
 // only lit texels (entering discontinuities) are edges, as single-pass SMSR has it.
+// The same as rvClassifyFetched (one texelFetch per texel), from two gathers.
 RvSample rvClassify(vec2 uv, float z, bool bothSides) {
+  RvSample r;
+  vec2 t = uv * vec2(uShadowMapSize);
+  r.texel = ivec2(floor(t));
+  r.p = t - floor(t);
+  r.x = RvAxis(1.0, RV_NO_END);
+  r.y = RvAxis(1.0, RV_NO_END);
+  RvCross c = rvGatherCross(r.texel);
+  r.cross = c;
+  r.s = rvTest(z, c.centre);
+  // |test − s| per neighbour, 0 outside the map (see the conventions).
+  bvec4 inside = bvec4(r.texel.x > 0, r.texel.x + 1 < uShadowMapSize.x, r.texel.y > 0, r.texel.y + 1 < uShadowMapSize.y);
+  vec4 tests = vec4(lessThanEqual(vec4(z - uBias), c.neighbours));
+  r.d = mix(vec4(0.0), abs(tests - r.s), inside);
+  // No edge outside the map, nor on the shadowed side unless asked for.
+  if (!rvInsideMap(r.texel) || (r.s == 0.0 && !bothSides)) r.d = vec4(0.0);
+  r.edge = r.d != vec4(0.0);
+  return r;
+}
+
+// rvClassify the straightforward way, one texelFetch per texel (the unit tests compare
+// the two).
+RvSample rvClassifyFetched(vec2 uv, float z, bool bothSides) {
   RvSample r;
   vec2 t = uv * vec2(uShadowMapSize);
   r.texel = ivec2(floor(t));
@@ -147,22 +193,28 @@ RvSample rvClassify(vec2 uv, float z, bool bothSides) {
   r.d = vec4(0.0);
   r.x = RvAxis(1.0, RV_NO_END);
   r.y = RvAxis(1.0, RV_NO_END);
-  // Outside the map the border depth 0 answers, as shadowTest's lookup gets it (one
-  // lookup either way: a shader runs both sides of a branch on some rasterizers).
+  // Outside the map the border depth 0 answers, as shadowTest's lookup gets it.
   bool inside = rvInsideMap(r.texel);
   r.s = rvTest(z, inside ? rvStoredDepth(r.texel) : 0.0);
   if (!inside) return r;  // no edge outside the map
+  r.cross = RvCross(rvStoredDepth(r.texel), vec4(rvStoredDepth(r.texel + ivec2(-1, 0)), rvStoredDepth(r.texel + ivec2(1, 0)),
+                                                 rvStoredDepth(r.texel + ivec2(0, -1)), rvStoredDepth(r.texel + ivec2(0, 1))));
   if (r.s == 0.0 && !bothSides) return r;
   r.d = rvDiscontinuity(r.texel, z, r.s);
   r.edge = r.d != vec4(0.0);
   return r;
 }
 
-// Shadow test, discontinuity and (for edge texels) the ONDS of both axes.
-RvSample rvSample(vec2 uv, float z, bool bothSides) {
-  RvSample r = rvClassify(uv, z, bothSides);
+// The ONDS of both axes of a classified sample that is an edge (others are returned as
+// they are); r.cross must hold its texel's stored depths.
+RvSample rvTraverse(RvSample r, float z) {
   if (!r.edge) return r;
-  r.x = rvAxis(rvComputeRD(r.texel, ivec2(-1, 0), z, r.s, r.d), rvComputeRD(r.texel, ivec2(1, 0), z, r.s, r.d), r.p.x);
-  r.y = rvAxis(rvComputeRD(r.texel, ivec2(0, -1), z, r.s, r.d), rvComputeRD(r.texel, ivec2(0, 1), z, r.s, r.d), r.p.y);
+  float o = r.cross.centre;
+  vec4 n = r.cross.neighbours;
+  r.x = rvAxis(rvComputeRD(r.texel, ivec2(-1, 0), z, r.s, r.d, o, n.x), rvComputeRD(r.texel, ivec2(1, 0), z, r.s, r.d, o, n.y), r.p.x);
+  r.y = rvAxis(rvComputeRD(r.texel, ivec2(0, -1), z, r.s, r.d, o, n.z), rvComputeRD(r.texel, ivec2(0, 1), z, r.s, r.d, o, n.w), r.p.y);
   return r;
 }
+
+// Shadow test, discontinuity and (for edge texels) the ONDS of both axes.
+RvSample rvSample(vec2 uv, float z, bool bothSides) { return rvTraverse(rvClassify(uv, z, bothSides), z); }

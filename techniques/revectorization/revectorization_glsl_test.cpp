@@ -26,12 +26,15 @@ constexpr float kOccluder = 0.2f, kReceiver = 0.5f;
 enum Function {
   kShadowTest = 0, kSmsr = 1, kRsmss = 2, kRpcfSmsr = 3, kRpcfRsmss = 4,
   kRpcfSmsrScreen = 5, kRpcfRsmssScreen = 6,  // as the screen pass computes them
+  kClassify = 7, kClassifyFetched = 8,         // rvClassify's s, d, edge (packed), two ways
+  kBlockRow = 9, kFetchedRow = 10,             // RPCF's row masks (packed), two ways
 };
 
 struct Options {
   bool improved = false;
   int maxSearch = 16;
   int kernel = 1;
+  int row = 0;  // kBlockRow, kFetchedRow: the block's row 0 … k + 1
 };
 
 // occluded(x, y) in texel units (x, y continuous): the analytic occluder.
@@ -70,6 +73,7 @@ class Probe {
     program_.set("uBias", 0.0f);
     program_.set("uImproved", o.improved ? 1 : 0);
     program_.set("uKernel", o.kernel);
+    program_.set("uRow", o.row);
     program_.set("uFunction", int(function));
     program_.set("uCount", int(samples.size()));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
@@ -368,6 +372,69 @@ TEST(RevectorizationGlsl, RsmssValuesAreInTheUnitInterval) {
     const auto one = p.run(kRsmss, points, {.kernel = 1}), three = p.run(kRpcfRsmss, points, {.kernel = 3});
     EXPECT_EQ(outsideTheUnitInterval(one) + outsideTheUnitInterval(three), 0);
     EXPECT_GT(strictlyBetween(one) + strictlyBetween(three), 0);
+  });
+}
+
+// rvClassify's two gathers give the shadow test, discontinuity and edge flag that one
+// texelFetch per texel gives, inside the map, on its border texels and outside it, for
+// both sides.
+TEST(RevectorizationGlsl, GatheredClassificationEqualsFetched) {
+  Probe& p = probe();
+  std::vector<glm::vec2> points = grid(0, 0, kSize, kSize);
+  for (const float outside : {-0.6f, -0.1f, kSize + 0.1f, kSize + 0.6f})
+    for (int i = 0; i < kSize * 4; ++i) {
+      points.emplace_back(outside, i * 0.25f + 0.1f);
+      points.emplace_back(i * 0.25f + 0.1f, outside);
+    }
+  forEachStaircase(p, [&](const Edge&) {
+    for (const bool bothSides : {false, true}) {
+      const auto gathered = p.run(kClassify, points, {.improved = bothSides});
+      EXPECT_EQ(gathered, p.run(kClassifyFetched, points, {.improved = bothSides}));
+      EXPECT_GT(std::count_if(gathered.begin(), gathered.end(), [](float v) { return v >= 32.0f; }), 0);
+    }
+  });
+}
+
+// RPCF's row masks from gathers (rpcfBlockTests) are the per-texel fetches' (rpcfRowTests)
+// on every row of the block and its rim, for blocks inside the map.
+TEST(RevectorizationGlsl, GatheredRpcfRowsEqualFetched) {
+  Probe& p = probe();
+  forEachStaircase(p, [&](const Edge&) {
+    for (const int k : {1, 3, 7}) {
+      SCOPED_TRACE("kernel " + std::to_string(k));
+      const int margin = k / 2 + 1;
+      std::vector<glm::vec2> points;  // one receiver per texel whose block lies inside
+      for (int y = margin; y < kSize - margin; ++y)
+        for (int x = margin; x < kSize - margin; ++x) points.emplace_back(x + 0.37f, y + 0.61f);
+      int partial = 0;
+      for (int row = 0; row < k + 2; ++row) {
+        const Options o{.kernel = k, .row = row};
+        const auto gathered = p.run(kBlockRow, points, o);
+        EXPECT_EQ(gathered, p.run(kFetchedRow, points, o)) << "row " << row;
+        const float all = float((1 << (k + 2)) - 1);
+        partial += int(std::count_if(gathered.begin(), gathered.end(), [&](float v) { return v > 0.0f && v < all; }));
+      }
+      EXPECT_GT(partial, 0);  // rows that straddle the edge
+    }
+  });
+}
+
+// The screen pass's RPCF (classified from the row masks, else the edge taps only, each
+// classified from the masks, or by rvClassify where the block leaves the map) gives the
+// plain k×k loop's very number, on the whole map and beyond its border.
+TEST(RevectorizationGlsl, RpcfScreenPassEqualsThePlainLoop) {
+  Probe& p = probe();
+  std::vector<glm::vec2> points;
+  for (int y = -2; y < kSize + 2; ++y)
+    for (int x = -2; x < kSize + 2; ++x) points.emplace_back(x + 0.37f, y + 0.61f);
+  forEachStaircase(p, [&](const Edge&) {
+    for (const int k : {3, 5}) {
+      SCOPED_TRACE("kernel " + std::to_string(k));
+      for (const bool improved : {false, true})
+        EXPECT_EQ(p.run(kRpcfSmsrScreen, points, {.improved = improved, .kernel = k}),
+                  p.run(kRpcfSmsr, points, {.improved = improved, .kernel = k}));
+      EXPECT_EQ(p.run(kRpcfRsmssScreen, points, {.kernel = k}), p.run(kRpcfRsmss, points, {.kernel = k}));
+    }
   });
 }
 

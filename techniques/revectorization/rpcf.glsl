@@ -13,9 +13,19 @@ uniform int uKernel;
 // every odd k up to 31 (the kernel parameter's maximum, the EDTSM* paper's widest) fits.
 uint rpcfTapBits() { return (1u << uint(uKernel)) - 1u; }
 
+// The rows the block tests hold: its k + 2 (taps and rim) and a spare, as gathers read
+// them in pairs.
+#ifdef RPCF_KERNEL
+const int kRpcfRows = RPCF_KERNEL + 3;
+#else
+const int kRpcfRows = 34;  // the widest kernel, 31
+#endif
+
 // The shadow tests of row centre.y + dy as (taps, rim): bit j of taps is the texel
 // centre.x − h + j (j = 0 … k − 1), bits 0 and 1 of rim the texels centre.x − h − 1 and
-// centre.x + h + 1 beside the block (callers keep the block inside the map).
+// centre.x + h + 1 beside the block (callers keep the block inside the map). One
+// texelFetch per texel: the straightforward version of rpcfBlockTests (the unit tests
+// compare them).
 uvec2 rpcfRowTests(ivec2 centre, int dy, int h, float depth) {
   uvec2 row = uvec2(0u);
   for (int j = 0; j <= 2 * h; ++j)
@@ -23,6 +33,36 @@ uvec2 rpcfRowTests(ivec2 centre, int dy, int h, float depth) {
   row.y = uint(rvTest(depth, rvStoredDepth(centre + ivec2(-h - 1, dy)))) |
           (uint(rvTest(depth, rvStoredDepth(centre + ivec2(h + 1, dy)))) << 1u);
   return row;
+}
+
+// The (taps, rim) bit of the block's column b (0: the rim texel left of the block, 1 … k:
+// the taps, k + 1: the rim texel right of it, beyond: none) for the test t.
+uvec2 rpcfColumnBit(int b, float t) {
+  uint bit = uint(t);
+  if (b == 0) return uvec2(0u, bit);
+  if (b <= uKernel) return uvec2(bit << uint(b - 1), 0u);
+  return b == uKernel + 1 ? uvec2(0u, bit << 1u) : uvec2(0u);
+}
+
+// rows[i] = rpcfRowTests(centre, i − h − 1, h, depth) for the block's rows i = 0 … k + 1,
+// from one gather per 2×2 texels ((k+3)²/4 gathers, not (k+2)² fetches; rvGatherCross
+// says why a gather reads the stored values). Row k + 2 is a spare.
+void rpcfBlockTests(ivec2 centre, float depth, out uvec2 rows[kRpcfRows]) {
+  int h = uKernel / 2;
+  vec2 texel = 1.0 / vec2(uShadowMapSize);
+  float z = depth - uBias;  // rvTest's
+  for (int i = 0; i < uKernel + 2; i += 2) {
+    uvec2 low = uvec2(0u), high = uvec2(0u);
+    for (int b = 0; b < uKernel + 2; b += 2) {
+      // Columns b, b + 1 of rows i, i + 1, around their shared corner; gather order
+      // (i0,j1), (i1,j1), (i1,j0), (i0,j0).
+      vec4 t = vec4(lessThanEqual(vec4(z), textureGather(uShadowMap, vec2(centre + ivec2(b - h, i - h)) * texel)));
+      low |= rpcfColumnBit(b, t.w) | rpcfColumnBit(b + 1, t.z);
+      high |= rpcfColumnBit(b, t.x) | rpcfColumnBit(b + 1, t.y);
+    }
+    rows[i] = low;
+    rows[i + 1] = high;
+  }
 }
 
 // Whether the taps' texels, computed as the variants' visibility functions compute them
@@ -50,24 +90,21 @@ uint rpcfRowEdges(uint below, uvec2 row, uint above, bool bothSides) {
 
 // True, with the filtered v, where no tap's texel is an edge of the sides the variant
 // traverses (`bothSides`); false sends the pixel to the edge draw. The taps' k×k block and
-// its one-texel rim are tested once, as row masks shared by neighbouring taps ((k+2)²
-// fetches, not 5k²). Taps that are not edges are their shadow tests, 0 or 1, whose sum is
-// an exact integer in any order, so v is the very number the visibility functions give.
+// its one-texel rim are tested once, as row masks shared by neighbouring taps
+// (rpcfBlockTests: (k+3)²/4 gathers, not 5k² fetches). Taps that are not edges are their
+// shadow tests, 0 or 1, whose sum is an exact integer in any order, so v is the very
+// number the visibility functions give.
 bool rpcfClassify(vec2 uv, float depth, bool bothSides, out float v) {
-  int h = uKernel / 2;
   ivec2 centre = ivec2(floor(uv * vec2(uShadowMapSize)));
   v = 0.0;
   if (!rpcfRegularBlock(uv, centre)) return false;
-  uvec2 below = rpcfRowTests(centre, -h - 1, h, depth);
-  uvec2 row = rpcfRowTests(centre, -h, h, depth);
+  uvec2 rows[kRpcfRows];
+  rpcfBlockTests(centre, depth, rows);
   uint lit = 0u;
   bool edge = false;
-  for (int y = -h; y <= h; ++y) {
-    uvec2 above = rpcfRowTests(centre, y + 1, h, depth);
-    edge = edge || rpcfRowEdges(below.x, row, above.x, bothSides) != 0u;
-    lit += uint(bitCount(row.x & rpcfTapBits()));
-    below = row;
-    row = above;
+  for (int i = 1; i <= uKernel; ++i) {  // the tap rows
+    edge = edge || rpcfRowEdges(rows[i - 1].x, rows[i], rows[i + 1].x, bothSides) != 0u;
+    lit += uint(bitCount(rows[i].x & rpcfTapBits()));
   }
   v = float(lit) / float(uKernel * uKernel);
   return !edge;
@@ -85,10 +122,11 @@ struct RpcfTaps {
   float depth;
   bool bothSides, regular;
   int y, next;           // the tap row, and the next tap of it to add
-  uvec2 row, above;      // row tests (taps, rim) of rows y and y + 1
+  uvec2 rows[kRpcfRows]; // rpcfBlockTests (unread where the block is not regular)
   uint pending;          // edge taps of row y not handed out yet (bits 0 … k − 1)
   float sum;
   vec2 tapUv;            // the edge tap handed out
+  RvSample tap;          // its rvClassify
 };
 
 RpcfTaps rpcfBeginTaps(vec2 uv, float depth, bool bothSides) {
@@ -101,8 +139,7 @@ RpcfTaps rpcfBeginTaps(vec2 uv, float depth, bool bothSides) {
   w.regular = rpcfRegularBlock(uv, w.centre);
   w.y = -h - 1;
   w.next = uKernel;  // nothing of row −h − 1 to add
-  w.row = w.regular ? rpcfRowTests(w.centre, -h - 1, h, depth) : uvec2(0u);
-  w.above = w.regular ? rpcfRowTests(w.centre, -h, h, depth) : uvec2(0u);
+  rpcfBlockTests(w.centre, depth, w.rows);
   w.pending = 0u;
   w.sum = 0.0;
   w.tapUv = uv;
@@ -111,7 +148,8 @@ RpcfTaps rpcfBeginTaps(vec2 uv, float depth, bool bothSides) {
 
 // Adds the row's taps before tap `until` (exclusive) that are no edges.
 void rpcfAddTests(inout RpcfTaps w, int until) {
-  for (; w.next < until; ++w.next) w.sum += float((w.row.x >> uint(w.next)) & 1u);
+  uint taps = w.rows[w.y + uKernel / 2 + 1].x;
+  for (; w.next < until; ++w.next) w.sum += float((taps >> uint(w.next)) & 1u);
 }
 
 // Hands out the next edge tap (w.tapUv), adding the taps before it; false when done.
@@ -121,10 +159,8 @@ bool rpcfNextEdgeTap(inout RpcfTaps w) {
     rpcfAddTests(w, uKernel);
     if (w.y == h) return false;
     ++w.y;
-    uvec2 below = w.row;
-    w.row = w.above;
-    w.above = w.regular ? rpcfRowTests(w.centre, w.y + 1, h, w.depth) : uvec2(0u);
-    w.pending = w.regular ? rpcfRowEdges(below.x, w.row, w.above.x, w.bothSides) : rpcfTapBits();
+    int i = w.y + h + 1;
+    w.pending = w.regular ? rpcfRowEdges(w.rows[i - 1].x, w.rows[i], w.rows[i + 1].x, w.bothSides) : rpcfTapBits();
     w.next = 0;
   }
   int tap = findLSB(w.pending);
@@ -132,6 +168,9 @@ bool rpcfNextEdgeTap(inout RpcfTaps w) {
   rpcfAddTests(w, tap);
   w.next = tap + 1;
   w.tapUv = kernelTapUv(w.uv, tap - h, w.y);
+  // Classified by its own gathers, not from the masks: the traversal needs the stored
+  // depths of its cross (RvSample.cross), and an irregular block's masks say nothing.
+  w.tap = rvClassify(w.tapUv, w.depth, w.bothSides);
   return true;
 }
 

@@ -12,6 +12,6 @@ DEFINE_KERNEL_MEAN(rpcfRsmssVisibility, rsmssVisibility)
 // The same number as rpcfRsmssVisibility, computing only the edge taps (rpcfNextEdgeTap).
 float rpcfRsmssEdgeVisibility(vec2 uv, float depth) {
   RpcfTaps taps = rpcfBeginTaps(uv, depth, true);
-  while (rpcfNextEdgeTap(taps)) taps.sum += rsmssVisibility(taps.tapUv, depth);
+  while (rpcfNextEdgeTap(taps)) taps.sum += rsmssOf(rvTraverse(taps.tap, depth));
   return rpcfEndTaps(taps);
 }

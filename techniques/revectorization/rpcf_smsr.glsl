@@ -13,6 +13,6 @@ DEFINE_KERNEL_MEAN(rpcfSmsrVisibility, smsrVisibility)
 // The same number as rpcfSmsrVisibility, computing only the edge taps (rpcfNextEdgeTap).
 float rpcfSmsrEdgeVisibility(vec2 uv, float depth) {
   RpcfTaps taps = rpcfBeginTaps(uv, depth, uImproved == 1);
-  while (rpcfNextEdgeTap(taps)) taps.sum += smsrVisibility(taps.tapUv, depth);
+  while (rpcfNextEdgeTap(taps)) taps.sum += smsrOf(rvTraverse(taps.tap, depth));
   return rpcfEndTaps(taps);
 }

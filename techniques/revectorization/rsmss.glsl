@@ -29,9 +29,8 @@ bool rsmssClassify(vec2 uv, float depth, out float v) {
   return !r.edge;
 }
 
-// Visibility in [0,1] of the light-space sample (uv, light depth).
-float rsmssVisibility(vec2 uv, float depth) {
-  RvSample r = rvSample(uv, depth, true);
+// Visibility in [0,1] of a traversed sample (rvSample, both sides).
+float rsmssOf(RvSample r) {
   if (!r.edge) return r.s;
   float rx = rsmssSigned(r.x), ry = rsmssSigned(r.y);
   float sign = 2.0 * r.s - 1.0;
@@ -39,3 +38,6 @@ float rsmssVisibility(vec2 uv, float depth) {
   if (rx * ry == 0.0) return r.s;
   return clamp((1.0 - r.s) + sign * (rx + ry), 0.0, 1.0);
 }
+
+// Visibility in [0,1] of the light-space sample (uv, light depth).
+float rsmssVisibility(vec2 uv, float depth) { return rsmssOf(rvSample(uv, depth, true)); }

@@ -43,9 +43,11 @@ bool smsrClassify(vec2 uv, float depth, out float v) {
   return !r.edge;
 }
 
-// Visibility of the light-space sample (uv, light depth): 1 lit, 0 shadow.
-float smsrVisibility(vec2 uv, float depth) {
-  RvSample r = rvSample(uv, depth, uImproved == 1);
+// Visibility of a traversed sample (rvSample): 1 lit, 0 shadow.
+float smsrOf(RvSample r) {
   if (!r.edge) return r.s;
   return uImproved == 1 ? smsrImproved(r) : smsrConservative(r);
 }
+
+// Visibility of the light-space sample (uv, light depth).
+float smsrVisibility(vec2 uv, float depth) { return smsrOf(rvSample(uv, depth, uImproved == 1)); }
