@@ -1,7 +1,6 @@
 // `testbed compare`: every chosen technique and the ground truth on one scene → per
 // technique T.{png,exr,json} with its error block, metrics.json (all records), report.md,
 // grid.png and speed_vs_error.svg.
-#include <chrono>
 #include <iostream>
 #include <sstream>
 
@@ -129,69 +128,41 @@ CommandRunner addCompareCommand(CLI::App& app) {
 
     Comparison comparison;
     comparison.scene = scene.name;
-    comparison.interleaved = true;
     nlohmann::json all = nlohmann::json::array();
 
-    // The area-light reference is no contender (its time is not compared): run on its own.
+    progress("groundtruth (shadow volumes)");
+    const TechniqueRun truth = runner.run(shadowVolumeGroundTruth(), resolveParameters("groundtruth", {}, {}));
+    comparison.groundTruth = makeRecord(truth, runner, backend);
+    comparison.groundTruth.error = computeErrorMetrics(truth.visibility, truth.visibility);
+    comparison.groundTruthVisibility = truth.visibility;
+    writeOutputs("groundtruth", truth, comparison.groundTruth);
+    all.push_back(comparison.groundTruth);
+    endProgressLine(": " + briefSummary(comparison.groundTruth, nullptr, ", "));
+
     std::optional<TechniqueRun> area;
     if (options->areaSamples > 0) {
       progress("area-light reference (" + std::to_string(options->areaSamples) + " samples)");
       const auto& reference = areaLightReference();
       area = runner.run(reference, resolveParameters("area", reference.info->parameters,
                                                      {{"area_samples", std::to_string(options->areaSamples)}}));
-      endProgressLine(": done");
-    }
-
-    // The ground truth and the techniques, timed side by side (FrameRunner::runInterleaved).
-    std::vector<TechniqueRequest> requests = {{&shadowVolumeGroundTruth(), resolveParameters("groundtruth", {}, {})}};
-    for (std::size_t i = 0; i < techniques.size(); ++i) requests.push_back({techniques[i], parameters[i]});
-    const auto idOf = [&](std::size_t i) {
-      return i == 0 ? std::string("groundtruth (shadow volumes)") : requests[i].technique->info->id;
-    };
-    auto roundsStarted = std::chrono::steady_clock::now();
-    InterleaveProgress interleave;
-    interleave.warmedUp = [&](std::size_t i) {
-      progress(idOf(i));
-      endProgressLine(": warmed up");
-      roundsStarted = std::chrono::steady_clock::now();
-    };
-    interleave.round = [&](int r) {
-      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - roundsStarted).count();
-      const int rounds = settings.repeat;
-      beginProgressLine("timed frame " + std::to_string(r + 1) + "/" + std::to_string(rounds) + " of every technique on " +
-                        scene.name);
-      endProgressLine(": " + formatFixed(elapsed, 1) + " s, ETA " +
-                      formatFixed(elapsed / (r + 1) * (rounds - r - 1), 1) + " s");
-    };
-    const std::vector<TechniqueRun> runs = runner.runInterleaved(requests, interleave);
-    for (std::size_t i = 0; i < runs.size(); ++i)
-      if (runs[i].timedAlone) comparison.timedAlone.push_back(runs[i].id);
-
-    const TechniqueRun& truth = runs.front();
-    comparison.groundTruth = makeRecord(truth, runner, backend);
-    comparison.groundTruth.error = computeErrorMetrics(truth.visibility, truth.visibility);
-    comparison.groundTruthVisibility = truth.visibility;
-    writeOutputs("groundtruth", truth, comparison.groundTruth);
-    all.push_back(comparison.groundTruth);
-    beginProgressLine("groundtruth on " + scene.name);
-    endProgressLine(": " + briefSummary(comparison.groundTruth, nullptr, ", "));
-    if (area) {
       const Record record = makeRecord(*area, runner, backend);
       writeOutputs("area", *area, record);
       all.push_back(record);
+      endProgressLine(": " + briefSummary(record, nullptr, ", "));
     }
 
-    for (std::size_t i = 1; i < runs.size(); ++i) {
-      const TechniqueRun& run = runs[i];
+    for (std::size_t i = 0; i < techniques.size(); ++i) {
+      const std::string& id = techniques[i]->info->id;
+      progress(id);
+      const TechniqueRun run = runner.run(*techniques[i], parameters[i]);
       const ErrorMetrics error =
           computeErrorMetrics(run.visibility, truth.visibility, area ? &area->visibility : nullptr);
       Record record = makeRecord(run, runner, backend);
       record.error = error;
-      writeOutputs(run.id, run, record);
+      writeOutputs(id, run, record);
       all.push_back(record);
       comparison.entries.push_back({record, run.visibility, runner.shade(run.visibility),
                                     errorHeatMap(run.visibility, truth.visibility)});
-      beginProgressLine(run.id + " on " + scene.name);
       endProgressLine(": " + briefSummary(record, &baselineRecord(comparison), ", "));
     }
     files.writeText("metrics.json", all.dump(2) + "\n");

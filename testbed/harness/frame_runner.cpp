@@ -117,14 +117,15 @@ ImageF TechniqueSession::visibility() const {
   return image;
 }
 
-namespace {
-
-// A session's timed frames become its run: medians, memory, last frame's visibility.
-TechniqueRun finishRun(const TechniqueRequest& request, const TechniqueSession& session,
-                       const std::vector<TechniqueSession::Frame>& frames) {
+TechniqueRun FrameRunner::run(const RegisteredTechnique& technique, const ParameterSet& parameters) {
   TechniqueRun result;
-  result.id = request.technique->info->id;
-  result.params = request.parameters.toJson();
+  result.id = technique.info->id;
+  result.params = parameters.toJson();
+  TechniqueSession session(*this, technique, parameters);
+  session.renderFrame();  // warm-up: shader compilation and first allocations
+  std::vector<TechniqueSession::Frame> frames;
+  for (int i = 0; i < settings_.repeat; ++i) frames.push_back(session.renderFrame());
+
   std::vector<PassTimes> times;
   std::vector<double> cpu;
   for (const auto& f : frames) {
@@ -137,46 +138,6 @@ TechniqueRun finishRun(const TechniqueRequest& request, const TechniqueSession& 
   result.visibility = session.visibility();
   result.debugImages = session.technique().debugImages();
   return result;
-}
-
-}  // namespace
-
-TechniqueRun FrameRunner::run(const RegisteredTechnique& technique, const ParameterSet& parameters) {
-  TechniqueSession session(*this, technique, parameters);
-  session.renderFrame();  // warm-up: shader compilation and first allocations
-  std::vector<TechniqueSession::Frame> frames;
-  for (int i = 0; i < settings_.repeat; ++i) frames.push_back(session.renderFrame());
-  return finishRun({&technique, parameters}, session, frames);
-}
-
-std::vector<TechniqueRun> FrameRunner::runInterleaved(const std::vector<TechniqueRequest>& requests,
-                                                      const InterleaveProgress& progress) {
-  std::vector<TechniqueRun> runs(requests.size());
-  std::vector<std::unique_ptr<TechniqueSession>> sessions(requests.size());
-  std::vector<std::vector<TechniqueSession::Frame>> frames(requests.size());
-  std::uint64_t held = 0;
-  for (std::size_t i = 0; i < requests.size(); ++i) {
-    auto session = std::make_unique<TechniqueSession>(*this, *requests[i].technique, requests[i].parameters);
-    session->renderFrame();  // warm-up: shader compilation and first allocations
-    if (held + session->memoryBytes() > kInterleaveBudgetBytes) {
-      // Too large to keep beside the others (huge maps): timed on its own, now.
-      for (int r = 0; r < settings_.repeat; ++r) frames[i].push_back(session->renderFrame());
-      runs[i] = finishRun(requests[i], *session, frames[i]);
-      runs[i].timedAlone = true;
-    } else {
-      held += session->memoryBytes();
-      sessions[i] = std::move(session);
-    }
-    progress.warmedUp(i);
-  }
-  for (int r = 0; r < settings_.repeat; ++r) {
-    for (std::size_t i = 0; i < requests.size(); ++i)
-      if (sessions[i]) frames[i].push_back(sessions[i]->renderFrame());
-    progress.round(r);
-  }
-  for (std::size_t i = 0; i < requests.size(); ++i)
-    if (sessions[i]) runs[i] = finishRun(requests[i], *sessions[i], frames[i]);
-  return runs;
 }
 
 ImageF FrameRunner::shade(const ImageF& visibility) const {

@@ -3,7 +3,6 @@
 // for a warm-up frame plus `repeat` timed frames, and reads back its visibility. What a run
 // becomes on disk is harness/record.h; how frames are timed, harness/timing.h.
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -47,25 +46,7 @@ struct TechniqueRun {
   double cpuMs = 0;          // median wall time of a frame, glFinish to glFinish
   std::uint64_t memoryBytes = 0;
   std::vector<std::pair<std::string, ImageF>> debugImages;  // ShadowTechnique::debugImages()
-  bool timedAlone = false;   // runInterleaved: timed on its own, not in the rounds
 };
-
-// What runInterleaved() runs: a technique and its parameters.
-struct TechniqueRequest {
-  const RegisteredTechnique* technique;
-  ParameterSet parameters;
-};
-
-// runInterleaved()'s progress: `warmedUp(i)` after request i's warm-up frame,
-// `round(r)` after timed round r (0-based) of every technique kept for the rounds.
-struct InterleaveProgress {
-  std::function<void(std::size_t)> warmedUp = [](std::size_t) {};
-  std::function<void(int)> round = [](int) {};
-};
-
-// GPU memory the sessions of runInterleaved() may hold at once; a technique that would
-// take the total beyond it is timed on its own (TechniqueRun::timedAlone).
-inline constexpr std::uint64_t kInterleaveBudgetBytes = std::uint64_t(2) << 30;
 
 class FrameRunner;
 
@@ -104,13 +85,6 @@ class FrameRunner {
   ~FrameRunner();
 
   TechniqueRun run(const RegisteredTechnique& technique, const ParameterSet& parameters);
-  // Several techniques whose times are compared: a warm-up frame each, then `repeat`
-  // rounds in which every technique renders one timed frame in turn. A slow spell of the
-  // machine (another process, a busy core) then falls on every technique alike instead of
-  // on whichever one was running, so the ratios to sm stay the techniques'. Each
-  // technique's visibility is its last frame's, as run() gives it.
-  std::vector<TechniqueRun> runInterleaved(const std::vector<TechniqueRequest>& requests,
-                                           const InterleaveProgress& progress = {});
   // Shaded image for people: Lambert × visibility plus ambient, RGB (harness/shading.h).
   ImageF shade(const ImageF& visibility) const;
 

@@ -22,10 +22,6 @@ struct Comparison {
   Record groundTruth;              // the ground truth's record (its cost is reported too)
   ImageF groundTruthVisibility;
   std::vector<ComparisonEntry> entries;  // the first is the baseline `sm`
-  // Timed frames were interleaved across techniques (FrameRunner::runInterleaved), except
-  // for these, timed on their own.
-  bool interleaved = false;
-  std::vector<std::string> timedAlone;
 };
 
 // The baseline every ratio is taken against: the first entry's record (sm).

@@ -45,17 +45,8 @@ std::string reportMarkdown(const Comparison& c) {
              ? "by wall time between glFinish calls: this is a software rasterizer, whose timer queries miss the "
                "vertex work it does at draw time, and only ratios mean much here"
              : "by GL timer queries")
-     << "; `× sm frame` is the whole frame's, G-buffer pass included, as the papers time it";
-  if (c.interleaved) {
-    md << ". The timed frames were interleaved: each round renders one frame of every technique in turn, so a "
-          "slow spell of the machine falls on all of them alike";
-    if (!c.timedAlone.empty()) {
-      md << " (timed on their own, too large to hold beside the others:";
-      for (const auto& id : c.timedAlone) md << " `" << id << "`";
-      md << ")";
-    }
-  }
-  md << ". Errors are against the stencil shadow-volume ground truth (README, Error metrics).\n\n";
+     << "; `× sm frame` is the whole frame's, G-buffer pass included, as the papers time it"
+     << ". Errors are against the stencil shadow-volume ground truth (README, Error metrics).\n\n";
   std::string header = "| technique |", rule = "|---|";
   for (const Metric& m : metricTable())
     if (m.shownIn(kReportColumn)) {

@@ -47,23 +47,6 @@ TEST(ReportMarkdown, GivesTheTechniqueOnlyAndTheWholeFrameRatio) {
             std::string::npos)
       << md;
   EXPECT_NE(md.find("Ground truth (`groundtruth`): 30.00 ms, 3.00× sm;"), std::string::npos) << md;
-  EXPECT_EQ(md.find("interleaved"), std::string::npos) << "only said of a comparison timed so";
-}
-
-TEST(ReportMarkdown, SaysHowTheFramesWereTimed) {
-  Comparison c;
-  c.scene = "test";
-  c.groundTruth = record("groundtruth", 30.0, 10.0);
-  c.entries.push_back({record("sm", 10.0, 10.0), {}, {}, {}});
-  c.interleaved = true;
-  EXPECT_NE(reportMarkdown(c).find("The timed frames were interleaved: each round renders one frame of every technique in "
-                                   "turn, so a slow spell of the machine falls on all of them alike. Errors"),
-            std::string::npos)
-      << reportMarkdown(c);
-  c.timedAlone = {"evsm", "msm"};
-  EXPECT_NE(reportMarkdown(c).find("alike (timed on their own, too large to hold beside the others: `evsm` `msm`)."),
-            std::string::npos)
-      << reportMarkdown(c);
 }
 
 TEST(ReportMarkdown, SaysWhereEachTechniquesTimeGoesLongestPassFirst) {
