@@ -1,5 +1,5 @@
 // The Embree ray caster against analytic shadows (a box's square, a sphere's ellipse) and
-// against the stencil shadow-volume ground truth on the same scenes and on every bundled
+// against the shadow-volume ground truth on the same scenes and on every bundled
 // scene. The ray caster has no shadow-map texels: its only error is the G-buffer
 // position's rounding, so the bands excluded around analytic boundaries are two pixels'
 // world footprint, not shadow-map texels.

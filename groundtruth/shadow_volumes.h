@@ -1,9 +1,9 @@
 #pragma once
-// Ground truth by stencil shadow volumes (Crow 1977), in the same visibility format as every
-// technique. Counting is depth-pass (Heidmann 1991) where the eye lies in no volume, decided
-// per light and frame, else depth-fail (Everitt & Kilgard 2002): both are exact there and
-// give the same counts. With `area_samples` N > 0 it is the
-// area-light reference: the mean of N point-light samples over the light's disk.
+// Ground truth by shadow volumes (Crow 1977), counted per pixel by blending, in the same
+// visibility format as every technique. Counting is depth-pass (Heidmann 1991) where the
+// eye lies in no volume, decided per light and frame, else depth-fail (Everitt & Kilgard
+// 2002): both are exact there and give the same counts. With `area_samples` N > 0 it is
+// the area-light reference: the mean of N point-light samples over the light's disk.
 #include "testbed/technique/registry.h"
 
 namespace testbed {

@@ -1,5 +1,5 @@
 #pragma once
-// Shadow-volume geometry for stencil counting, built on the CPU from OpenMesh adjacency for
+// Shadow-volume geometry for counting, built on the CPU from OpenMesh adjacency for
 // one point (spot) or direction (directional) light.
 //
 // Exactness on any topology: every triangle is oriented towards the light and grouped into

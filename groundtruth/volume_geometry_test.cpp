@@ -1,5 +1,5 @@
 // Shadow-volume geometry: every volume must be closed and consistently wound (each directed
-// edge met once in each direction, points at infinity included), or stencil counts drift.
+// edge met once in each direction, points at infinity included), or the counts drift.
 #include "groundtruth/volume_geometry.h"
 
 #include <gtest/gtest.h>

@@ -20,7 +20,7 @@ RenderSettings renderSettings(glm::ivec2 size, int mapSize);
 // Registered technique `id`, its defaults overridden by `set` (name → value as on --set).
 TechniqueRun runTechnique(FrameRunner& runner, const std::string& id,
                           const std::map<std::string, std::string>& set = {});
-// The stencil shadow-volume ground truth of the runner's frame.
+// The shadow-volume ground truth of the runner's frame.
 ImageF groundTruthVisibility(FrameRunner& runner);
 
 // The receivers (pixels that are not NaN) of a visibility image: how many there are, how

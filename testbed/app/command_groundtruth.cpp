@@ -25,7 +25,7 @@ CommandRunner addGroundTruthCommand(CLI::App& app) {
   auto options = std::make_shared<Options>();
   auto* command = app.add_subcommand("groundtruth", "render the exact (and area-light) reference");
   command->add_option("--scene", options->scene, "scene file (JSON)")->required();
-  command->add_option("--method", options->method, "volumes (stencil shadow volumes) or raycast (Embree)")
+  command->add_option("--method", options->method, "volumes (shadow volumes) or raycast (Embree)")
       ->capture_default_str();
   command->add_option("--area-samples", options->areaSamples, "also render the area-light reference with N samples");
   options->common.addTo(*command);

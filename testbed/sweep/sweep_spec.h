@@ -16,7 +16,7 @@
 
 namespace testbed {
 
-// The reference that every table can time (the stencil shadow volumes).
+// The reference that every table can time (the shadow volumes).
 inline constexpr const char* kGroundTruthId = "groundtruth";
 
 // Settings a column or row may change; unset fields fall back to the level above
