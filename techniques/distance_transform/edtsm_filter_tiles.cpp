@@ -1,5 +1,7 @@
 #include "techniques/distance_transform/edtsm_filter_tiles.h"
 
+#include "testbed/render/screen_pass.h"
+
 namespace testbed::distance_transform {
 namespace {
 
@@ -20,12 +22,7 @@ void FilterTiles::begin(glm::ivec2 size, GLuint unit) {
 }
 
 void FilterTiles::draw(const Program& program, const Framebuffer& target, glm::ivec2 size, glm::ivec2 reach) const {
-  glBindFramebuffer(GL_FRAMEBUFFER, target.id());
-  glViewport(0, 0, size.x, size.y);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
-  program.use();
+  beginScreenDraw(program, target, size);
   glBindTextureUnit(kKindsUnit, kinds_.id());
   program.set("uTileKinds", kKindsUnit);
   program.set("uTileReach", (reach + kTile - 1) / kTile);

@@ -4,13 +4,17 @@ namespace testbed {
 
 ScreenPass::ScreenPass() : empty_(VertexArray::create()) {}
 
-void ScreenPass::draw(const Program& program, const Framebuffer& target, glm::ivec2 size) const {
+void beginScreenDraw(const Program& program, const Framebuffer& target, glm::ivec2 size) {
   glBindFramebuffer(GL_FRAMEBUFFER, target.id());
   glViewport(0, 0, size.x, size.y);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   program.use();
+}
+
+void ScreenPass::draw(const Program& program, const Framebuffer& target, glm::ivec2 size) const {
+  beginScreenDraw(program, target, size);
   glBindVertexArray(empty_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }

@@ -7,6 +7,11 @@
 
 namespace testbed {
 
+// The state every per-pixel pass draws in: `target` bound over `size` pixels, no depth
+// test, culling or blending, `program` in use. ScreenPass::draw and passes drawing their
+// own geometry over the screen (e.g. EDTSM's filter tiles) start from it.
+void beginScreenDraw(const Program& program, const Framebuffer& target, glm::ivec2 size);
+
 class ScreenPass {
  public:
   ScreenPass();
