@@ -82,6 +82,8 @@ class FrameRunner {
   // Needs a current GL context. The scene is read by reference on every frame: after its
   // camera changes, call renderGBuffer(); after its light changes, lightMoved().
   FrameRunner(const Scene& scene, const RenderSettings& settings);
+  // A temporary scene would dangle: the runner reads it on every frame.
+  FrameRunner(const Scene&& scene, const RenderSettings& settings) = delete;
   ~FrameRunner();
 
   TechniqueRun run(const RegisteredTechnique& technique, const ParameterSet& parameters);

@@ -173,7 +173,7 @@ Record makeRecord(const TechniqueRun& run, const FrameRunner& runner, const std:
   r.repeat = s.repeat;
   r.triangles = runner.triangleCount();
   r.memoryBytes = run.memoryBytes;
-  r.light = lightSetupRecord(runner.light(), s.shadowMapSize, s.depthFormat, run.params).get<LightRecord>();
+  r.light = lightSetupRecord(runner.light(), s.shadowMapSize, s.depthFormat, run.params);
   r.backend = backend;
   return r;
 }

@@ -13,6 +13,7 @@
 
 #include "testbed/harness/frame_runner.h"
 #include "testbed/harness/timing.h"
+#include "testbed/render/shadow_map_pass.h"  // LightRecord
 #include "testbed/metrics/metrics.h"
 
 namespace testbed {
@@ -21,18 +22,6 @@ namespace testbed {
 struct PassesRecord {
   double totalMs = 0;                       // the metric table's gpu_ms.total / wall_ms.total
   std::map<std::string, double> passesMs;  // by pass name
-};
-
-// The "light" block: the light's transforms and their size in world units at the near and
-// far plane (render/shadow_map_pass.h, lightSetupRecord).
-struct LightRecord {
-  std::string type;  // "spot" or "directional"
-  std::array<double, 3> eye{};
-  double nearPlane = 0, farPlane = 0;
-  std::optional<double> fov, extent;  // a spot light's fov, a directional light's extent
-  bool fitted = false;
-  std::array<double, 2> depthStepWorld{}, texelWorld{};
-  std::optional<std::array<double, 2>> offsetWorld;  // techniques with a polygon offset
 };
 
 struct Record {

@@ -20,6 +20,19 @@ void reflectShadowTestBias(ParameterBinder& b, float& bias) {
   b.real("bias", bias, 0.0, -1.0, 1.0, "constant depth bias subtracted from the receiver's light depth");
 }
 
+namespace {
+// glPolygonOffset's units for `offset_units` counted in 16-bit depth steps: ×256 at 24 bits
+// (r = 2^-24); none at 32f, whose shader adds the constant term itself.
+float polygonOffsetUnits(DepthFormat format, float units16) {
+  switch (format) {
+    case DepthFormat::D16: return units16;
+    case DepthFormat::D24: return units16 * 256;
+    case DepthFormat::D32F: return 0.0f;
+  }
+  return units16;
+}
+}  // namespace
+
 void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
   const GLenum format = depthInternalFormat(in.depthFormat);
   // Border depth 0: every lookup outside the map reads shadow (testbed/glsl/receiver.glsl).
@@ -44,7 +57,7 @@ void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
   glDepthMask(GL_TRUE);
   glDisable(GL_CULL_FACE);  // open meshes cast shadows from both sides
   glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(parameters_.offsetFactor, floatDepth ? 0.0f : in.depthFormat == DepthFormat::D24 ? units * 256 : units);
+  glPolygonOffset(parameters_.offsetFactor, polygonOffsetUnits(in.depthFormat, units));
   program.use();
   program.set("uLightViewProjection", in.light.viewProjection());
   if (floatDepth) program.set("uConstantOffset", units * kDepthStep16);
@@ -52,30 +65,29 @@ void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
-nlohmann::json lightSetupRecord(const LightTransforms& light, int shadowMapSize, DepthFormat format,
-                                const nlohmann::json& params) {
+LightRecord lightSetupRecord(const LightTransforms& light, int shadowMapSize, DepthFormat format,
+                             const nlohmann::json& params) {
   const int bits = format == DepthFormat::D16 ? 16 : 24;  // 32f: its r in [0.5, 1), 2^-24
   auto texel = [&](double depth) {
     const double half = light.orthographic ? light.extent : depth * std::tan(glm::radians(double(light.fovDegrees)) / 2);
     return 2 * half / shadowMapSize;
   };
-  auto atPlanes = [&](auto&& f) { return nlohmann::json::array({f(light.nearPlane), f(light.farPlane)}); };
-  nlohmann::json record = {
-      {"type", light.orthographic ? "directional" : "spot"},
-      {"eye", {light.position.x, light.position.y, light.position.z}},
-      {"near", light.nearPlane},
-      {"far", light.farPlane},
-      {"fitted", light.fitted},
-      {"depth_step_world", atPlanes([&](double d) { return depthStepWorld(light, bits, d); })},
-      {"texel_world", atPlanes(texel)},
-  };
+  auto atPlanes = [&](auto&& f) { return std::array<double, 2>{f(light.nearPlane), f(light.farPlane)}; };
+  LightRecord record;
+  record.type = light.orthographic ? "directional" : "spot";
+  record.eye = {light.position.x, light.position.y, light.position.z};
+  record.nearPlane = light.nearPlane;
+  record.farPlane = light.farPlane;
+  record.fitted = light.fitted;
+  record.depthStepWorld = atPlanes([&](double d) { return depthStepWorld(light, bits, d); });
+  record.texelWorld = atPlanes(texel);
   if (light.orthographic)
-    record["extent"] = light.extent;
+    record.extent = light.extent;
   else
-    record["fov"] = light.fovDegrees;
+    record.fov = light.fovDegrees;
   if (params.contains("offset_units") && params.contains("offset_factor")) {
     const double units = params["offset_units"].get<double>(), factor = params["offset_factor"].get<double>();
-    record["offset_world"] =
+    record.offsetWorld =
         atPlanes([&](double d) { return units * depthStepWorld(light, 16, d) + factor * texel(d); });
   }
   return record;

@@ -4,6 +4,10 @@
 // convention), polygon offset while rendering (default factor 4, units 20, the papers').
 // The offset counts depth-buffer steps, so its world size follows the light's depth range,
 // which the harness fits to the scene (scene/light_fit.h); every record states it.
+#include <array>
+#include <optional>
+#include <string>
+
 #include <nlohmann/json_fwd.hpp>
 
 #include "testbed/gl/objects.h"
@@ -42,11 +46,20 @@ class ShadowMapPass {
 // One step of a 16-bit depth buffer in window depth: the unit of `offset_units`.
 inline constexpr float kDepthStep16 = 1.0f / 65536.0f;
 
-// The record's "light" block: the transforms used (eye, near, far, fov or extent, fitted)
+// The record's "light" block (harness/record.h writes and reads it): the transforms used
 // and what they amount to in world units along the light's rays at the near and far
 // plane: one depth step, one shadow-map texel and, for a technique with the polygon
 // offset, the offset for a surface at 45° to the light (units·step + factor·texel).
-nlohmann::json lightSetupRecord(const LightTransforms& light, int shadowMapSize, DepthFormat format,
+struct LightRecord {
+  std::string type;  // "spot" or "directional"
+  std::array<double, 3> eye{};
+  double nearPlane = 0, farPlane = 0;
+  std::optional<double> fov, extent;  // a spot light's fov, a directional light's extent
+  bool fitted = false;
+  std::array<double, 2> depthStepWorld{}, texelWorld{};
+  std::optional<std::array<double, 2>> offsetWorld;  // techniques with a polygon offset
+};
+LightRecord lightSetupRecord(const LightTransforms& light, int shadowMapSize, DepthFormat format,
                                 const nlohmann::json& params);
 
 // `bias` of glsl/shadow_test.glsl (uBias), shared by every technique that uses the test.
