@@ -112,9 +112,10 @@ class ShadowVolumes final : public ShadowTechnique {
       resolveProgram_ = Program::graphics("testbed/render/fullscreen.vert", "groundtruth/volume_visibility.frag");
       vertexArray_ = VertexArray::create();
     }
-    // The volume counts (small integers, exact in half floats), tested against the
-    // G-buffer's depth.
-    count_.ensure({.size = in.size, .color = GL_R16F, .borrowedDepth = &in.gbuffer.depth()});
+    // The volume counts, tested against the G-buffer's depth. 32-bit floats keep every
+    // running sum of ±1 and ±2 exact up to 2^24 faces per pixel; half floats would round
+    // past 2048, which a dense scene (grass, foliage) can reach.
+    count_.ensure({.size = in.size, .color = GL_R32F, .borrowedDepth = &in.gbuffer.depth()});
   }
 
   // The light-independent part, gathered once per scene: adjacency, face normals, bounds.
