@@ -80,10 +80,7 @@ TechniqueSession::TechniqueSession(FrameRunner& runner, const RegisteredTechniqu
                                    const ParameterSet& parameters)
     : runner_(runner), id_(technique.info->id) {
   const glm::ivec2 size = runner.settings().size;
-  visibility_ = Texture::create2D(GL_R32F, size.x, size.y);
-  target_ = Framebuffer::create();
-  target_.attachColor(0, visibility_);
-  target_.finish({0});
+  target_.ensure({.size = size, .color = GL_R32F});  // before the ledger: the harness's, not the technique's
   // Everything the technique allocates, now or while rendering, is booked in its ledger.
   GpuMemoryLedger::Scope booking(ledger_);
   instance_ = technique.create();
@@ -98,10 +95,10 @@ TechniqueSession::~TechniqueSession() {
 TechniqueSession::Frame TechniqueSession::renderFrame() {
   GpuMemoryLedger::Scope booking(ledger_);
   const float zero = 0.0f;
-  glClearTexImage(visibility_.id(), 0, GL_RED, GL_FLOAT, &zero);
+  glClearTexImage(target_.color().id(), 0, GL_RED, GL_FLOAT, &zero);
   glFinish();
   const auto start = std::chrono::steady_clock::now();
-  instance_->render(runner_.inputs(), timer_, VisibilityTarget{target_, visibility_});
+  instance_->render(runner_.inputs(), timer_, VisibilityTarget{target_.framebuffer(), target_.color()});
   glFinish();
   const auto end = std::chrono::steady_clock::now();
   Frame frame{timer_.resolve(), std::chrono::duration<double, std::milli>(end - start).count()};
@@ -110,7 +107,7 @@ TechniqueSession::Frame TechniqueSession::renderFrame() {
 }
 
 ImageF TechniqueSession::visibility() const {
-  ImageF image = readTopDown(visibility_, 1);
+  ImageF image = readTopDown(target_.color(), 1);
   const auto& positions = runner_.positions_.pixels;
   for (std::size_t i = 0; i < image.pixels.size(); ++i)
     if (positions[i * 4 + 3] < 0.5f) image.pixels[i] = std::numeric_limits<float>::quiet_NaN();

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "testbed/gl/pass_timer.h"
+#include "testbed/gl/render_target.h"
 #include "testbed/io/image_io.h"
 #include "testbed/gl/depth_format.h"
 #include "testbed/render/gbuffer_pass.h"
@@ -70,8 +71,7 @@ class TechniqueSession {
  private:
   FrameRunner& runner_;
   GpuMemoryLedger ledger_;
-  Texture visibility_;
-  Framebuffer target_;
+  RenderTarget target_;  // its colour: the visibility, R32F
   PassTimer timer_;
   std::unique_ptr<ShadowTechnique> instance_;
   std::string id_;

@@ -12,12 +12,7 @@ Rect placeImage(glm::ivec2 image, const Rect& area) {
 }
 
 void Display::upload(const ImageF& image) {
-  if (!texture_ || texture_.width() != image.width || texture_.height() != image.height) {
-    texture_ = Texture::create2D(GL_RGBA8, image.width, image.height);
-    source_ = Framebuffer::create();
-    source_.attachColor(0, texture_);
-    source_.finish({0});
-  }
+  source_.ensure({.size = {image.width, image.height}, .color = GL_RGBA8});
   // Rows go bottom-up in GL; grey images fill all three channels.
   std::vector<unsigned char> bytes(std::size_t(image.width) * image.height * 4, 255);
   for (int y = 0; y < image.height; ++y) {
@@ -27,7 +22,7 @@ void Display::upload(const ImageF& image) {
     }
   }
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage2D(texture_.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+  glTextureSubImage2D(source_.color().id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
 }
 
 void Display::draw(glm::ivec2 framebuffer, const Rect& where) const {
@@ -36,10 +31,10 @@ void Display::draw(glm::ivec2 framebuffer, const Rect& where) const {
   glDisable(GL_SCISSOR_TEST);
   const float clear[4] = {0.08f, 0.08f, 0.09f, 1.0f};
   glClearNamedFramebufferfv(0, GL_COLOR, 0, clear);
-  if (!texture_) return;
+  if (!source_) return;
   // Window rows are bottom-up: the rectangle's top edge is framebuffer.y - origin.y.
   const int top = framebuffer.y - where.origin.y;
-  glBlitNamedFramebuffer(source_.id(), 0, 0, 0, texture_.width(), texture_.height(), where.origin.x,
+  glBlitNamedFramebuffer(source_.framebuffer().id(), 0, 0, 0, source_.color().width(), source_.color().height(), where.origin.x,
                          top - where.size.y, where.origin.x + where.size.x, top, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 

@@ -5,6 +5,7 @@
 #include <glm/glm.hpp>
 
 #include "testbed/gl/objects.h"
+#include "testbed/gl/render_target.h"
 #include "testbed/io/image_io.h"
 
 namespace testbed::viewer {
@@ -29,8 +30,7 @@ class Display {
   void draw(glm::ivec2 framebuffer, const Rect& where) const;
 
  private:
-  Texture texture_;
-  Framebuffer source_;
+  RenderTarget source_;  // the uploaded image, RGBA8, blitted to the window
 };
 
 // The default framebuffer's back buffer as RGB, top-down (after the panel is drawn).
