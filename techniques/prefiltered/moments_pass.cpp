@@ -43,10 +43,10 @@ void MomentsPass::updateFarTexel(const MomentsFormat& format, const glm::vec4& p
   texel.ensure({.size = {1, 1}, .color = format.internalFormat});
   clear_.set("uParams", params);
   screen_.draw(clear_, texel.framebuffer(), {1, 1});
-  // RGBA16 is UNORM: its integers round-trip exactly; the float formats' floats do.
-  farType_ = format.internalFormat == GL_RGBA16 ? GL_UNSIGNED_SHORT : GL_FLOAT;
-  farBits_ = {};
-  glGetTextureImage(texel.color().id(), 0, GL_RGBA, farType_, sizeof(farBits_), farBits_.data());
+  // Float formats round-trip exactly; RGBA16's k / 65535 comes back as k from the clear's
+  // rounding to nearest (k / 65535 is within 2^-24 of the exact quotient).
+  far_ = glm::vec4(0.0f);
+  glGetTextureImage(texel.color().id(), 0, GL_RGBA, GL_FLOAT, sizeof(far_), &far_);
   farParams_ = params;
   farValid_ = true;
 }
@@ -76,7 +76,7 @@ void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsF
     const float farDepth = 1.0f;
     glDepthMask(GL_TRUE);  // the clear obeys the write mask
     glClearNamedFramebufferfv(moments_.framebuffer().id(), GL_DEPTH, 0, &farDepth);
-    glClearTexImage(moments_.color().id(), 0, GL_RGBA, farType_, farBits_.data());
+    glClearNamedFramebufferfv(moments_.framebuffer().id(), GL_COLOR, 0, &far_[0]);
 
     glBindFramebuffer(GL_FRAMEBUFFER, moments_.framebuffer().id());
     glViewport(0, 0, size.x, size.y);

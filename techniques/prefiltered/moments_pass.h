@@ -10,8 +10,6 @@
 //             lookups.
 // Parameters `blur` (odd kernel size, 1 = none) and `mips` are declared here once; each
 // technique reflects them after its own.
-#include <array>
-#include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -50,10 +48,9 @@ class MomentsPass {
 
  private:
   // The format's texel for the far plane, as the encode shader writes it: drawn into a
-  // 1×1 target and read back once per format and `params`, then cleared with, which on a
-  // rasterizer costs a fill instead of one fragment per texel. Read back in the format's
-  // own type (float, or the 16-bit integers of RGBA16), so the clear stores the very bits
-  // the full-map draw stored.
+  // 1×1 target and read back once per format and `params`, then the clear colour, which on
+  // a rasterizer costs a fill instead of one fragment per texel; the clear stores the very
+  // bits the full-map draw stored (scripts/bit_identical.sh against the draw).
   void updateFarTexel(const MomentsFormat& format, const glm::vec4& params);
 
   Parameters parameters_{};
@@ -64,8 +61,7 @@ class MomentsPass {
   ScreenPass screen_;
   glm::vec4 farParams_{0.0f};
   bool farValid_ = false;
-  GLenum farType_ = GL_FLOAT;
-  std::array<std::uint32_t, 4> farBits_{};  // 4 floats, or 4 unsigned shorts in the first 8 bytes
+  glm::vec4 far_{0.0f};  // the texel, as the clear colour
 };
 
 }  // namespace testbed
