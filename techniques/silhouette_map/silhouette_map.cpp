@@ -59,7 +59,7 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
     if (!edgeProgram_) {
       edgeProgram_ = Program::graphics("techniques/silhouette_map/silhouette_map_edges.vert",
                                        "techniques/silhouette_map/silhouette_map_points.frag");
-      quadVertexArray_ = VertexArray::create();
+      emptyVertexArray_ = VertexArray::create();
     }
     const int side = in.shadowMapSize + 1;  // one more than the depth map: see silhouette_map.glsl
     // 16-bit unorm offsets in the texel: 1/65535 of a texel, the notes ask for ≥ fp16.
@@ -94,32 +94,15 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
     edgeProgram_.set("uOcclusionBias", parameters_.occlusionBias);
     bindShadowMap(edgeProgram_, shadowMap_.depth());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, edgeBuffer_.id());
-    ensureQuadIndices(edges);
-    glBindVertexArray(quadVertexArray_.id());
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(6 * edges), GL_UNSIGNED_INT, nullptr);
+    glBindVertexArray(emptyVertexArray_.id());
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(6 * edges));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-  }
-
-  // Two triangles (0, 1, 2), (0, 2, 3) per edge quad over its 4 pulled vertices, for at
-  // least `edges` edges; remade only when a light finds more silhouette edges than before.
-  void ensureQuadIndices(std::size_t edges) {
-    if (edges <= quadIndexEdges_) return;
-    const std::size_t capacity = edges;
-    std::vector<GLuint> indices;
-    indices.reserve(6 * capacity);
-    for (std::size_t e = 0; e < capacity; ++e)
-      for (const GLuint corner : {0u, 1u, 2u, 0u, 2u, 3u}) indices.push_back(GLuint(4 * e) + corner);
-    quadIndices_ = Buffer::create(indices.size() * sizeof(GLuint), indices.data());
-    glVertexArrayElementBuffer(quadVertexArray_.id(), quadIndices_.id());
-    quadIndexEdges_ = capacity;
   }
 
   ShadowMapPass shadowMap_;
   revectorization::EdgeSplitPass visibility_{"techniques/silhouette_map/silhouette_map_visibility.frag"};
   Program edgeProgram_;
-  VertexArray quadVertexArray_;  // no attributes (vertex pulling), the quad indices
-  Buffer quadIndices_;
-  std::size_t quadIndexEdges_ = 0;
+  VertexArray emptyVertexArray_;
   RenderTarget silhouettes_;  // the (N + 1)² silhouette map, RG16
   Buffer edgeBuffer_;
   std::vector<glm::vec4> endpoints_;
