@@ -7,7 +7,8 @@
 // quads"; the fragment shader drops the extras). Only touched texels get a point
 // (silhouettePoint), so any margin over √2/2 writes the same map: 0.75 keeps the texel
 // centres 0.04 texels clear of the quad's edges, where the rasterizer's rule could drop
-// them, and shades about a third fewer fragments than a margin of 1.
+// them, and shades a quarter (long edges) to a third (short ones) fewer fragments than a
+// margin of 1.
 layout(std430, binding = 0) readonly buffer Edges { vec4 endpoints[]; };
 uniform mat4 uLightViewProjection;
 uniform float uMapSize;  // N, the depth map's side
