@@ -37,6 +37,20 @@ std::vector<float> MomentsPass::blurWeights(int size) {
   return weights;
 }
 
+void MomentsPass::updateFarTexel(const MomentsFormat& format, const glm::vec4& params) {
+  if (farValid_ && params == farParams_) return;
+  RenderTarget texel;
+  texel.ensure({.size = {1, 1}, .color = format.internalFormat});
+  clear_.set("uParams", params);
+  screen_.draw(clear_, texel.framebuffer(), {1, 1});
+  // Float formats round-trip exactly; RGBA16's k / 65535 comes back as k from the clear's
+  // rounding to nearest (k / 65535 is within 2^-24 of the exact quotient).
+  far_ = glm::vec4(0.0f);
+  glGetTextureImage(texel.color().id(), 0, GL_RGBA, GL_FLOAT, sizeof(far_), &far_);
+  farParams_ = params;
+  farValid_ = true;
+}
+
 void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsFormat& format,
                          const glm::vec4& params) {
   if (!encode_ || format != format_) {
@@ -45,7 +59,9 @@ void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsF
     clear_ = Program::graphics("techniques/prefiltered/far_plane.vert", "techniques/prefiltered/moments.frag",
                                format.defines());
     format_ = format;
+    farValid_ = false;
   }
+  updateFarTexel(format, params);
   const glm::ivec2 size(in.shadowMapSize);
   // colorLevels 0 = the full chain, booked in the ledger like any other level.
   if (moments_.ensure({.size = size,
@@ -57,11 +73,10 @@ void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsF
 
   {
     auto scope = timer.scope("moments");
-    clear_.set("uParams", params);
     const float farDepth = 1.0f;
     glDepthMask(GL_TRUE);  // the clear obeys the write mask
     glClearNamedFramebufferfv(moments_.framebuffer().id(), GL_DEPTH, 0, &farDepth);
-    screen_.draw(clear_, moments_.framebuffer(), size);  // depth test off: colour only
+    glClearNamedFramebufferfv(moments_.framebuffer().id(), GL_COLOR, 0, &far_[0]);
 
     glBindFramebuffer(GL_FRAMEBUFFER, moments_.framebuffer().id());
     glViewport(0, 0, size.x, size.y);

@@ -3,7 +3,8 @@
 //  "moments": the scene from the light (the shared shadow map's transform, no culling, no
 //             polygon offset: these techniques are bias-free) into a float colour target of
 //             the format's moments, with a depth attachment so each texel holds the nearest
-//             surface; cleared first to the moments of depth 1 (the far plane).
+//             surface; cleared first to the moments of depth 1 (the far plane), a texel the
+//             encode shader itself wrote (farTexel(): one texel, not a full-map draw).
 //  "blur":    a separable Gaussian (horizontal then vertical, two draws through a ping-pong
 //             texture: separable_blur.h), then, with `mips`, the mip chain for trilinear
 //             lookups.
@@ -46,12 +47,21 @@ class MomentsPass {
   static std::vector<float> blurWeights(int size);
 
  private:
+  // The format's texel for the far plane, as the encode shader writes it: drawn into a
+  // 1×1 target and read back once per format and `params`, then the clear colour, which on
+  // a rasterizer costs a fill instead of one fragment per texel; the clear stores the very
+  // bits the full-map draw stored (scripts/bit_identical.sh against the draw).
+  void updateFarTexel(const MomentsFormat& format, const glm::vec4& params);
+
   Parameters parameters_{};
   MomentsFormat format_;
   RenderTarget moments_;   // the moments and the light's depth buffer
   SeparableBlur blur_;     // and its ping-pong target, with blur > 1
   Program encode_, clear_;
   ScreenPass screen_;
+  glm::vec4 farParams_{0.0f};
+  bool farValid_ = false;
+  glm::vec4 far_{0.0f};  // the texel, as the clear colour
 };
 
 }  // namespace testbed

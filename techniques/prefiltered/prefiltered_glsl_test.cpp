@@ -351,7 +351,8 @@ TEST(BlurGlsl, WidestKernelSpreadsAnImpulseIntoItsWeights) {
   target.ensure({.size = {n, n}, .color = GL_RGBA32F});
   const Program rows = Program::graphics("testbed/render/fullscreen.vert", "techniques/prefiltered/blur.frag",
                                          "#define BLUR_RADIUS " + std::to_string(radius) +
-                                             "\n#define BLUR_STEP ivec2(1, 0)\n#define BLUR_PACK 1\n");
+                                             "\n#define BLUR_STEP ivec2(1, 0)\n#define BLUR_STEP_COLUMNS 0\n"
+                                             "#define BLUR_PACK 1\n#define BLUR_LAYERS 1\n");
   glProgramUniform1fv(rows.id(), rows.location("uWeights"), GLsizei(weights.size()), weights.data());
   rows.set("uSource", 0);
   glBindTextureUnit(0, source.id());

@@ -3,35 +3,66 @@
 #include <string>
 
 namespace testbed {
+namespace {
+
+// Row neighbours per fragment for the four-channel formats, the most colour attachments GL
+// guarantees. Instructions per frame on llvmpipe (callgrind, dragon_sun, msm 640x360 /
+// 512²): blur 55.9M plain, 44.7M with 4 layers, 42.6M with 8.
+constexpr int kLayers = 8;
+
+}  // namespace
 
 int SeparableBlur::pack(GLenum format) const {
   if (!packed_) return 1;
   return format == GL_R32F ? 4 : format == GL_RG32F ? 2 : 1;
 }
 
+int SeparableBlur::layers(GLenum format) const {
+  return packed_ && (format == GL_RGBA32F || format == GL_RGBA16) ? kLayers : 1;
+}
+
 void SeparableBlur::ensure(glm::ivec2 size, GLenum format, bool blurred) {
   if (!blurred) {
-    scratch_ = RenderTarget();
+    scratch_ = Texture();
+    scratchTarget_ = Framebuffer();
+    scratchSize_ = glm::ivec2(0);
     return;
   }
-  const int p = pack(format);
-  // Packed: the same bytes as the plain texture where the width is a multiple of the pack.
-  scratch_.ensure({.size = {(size.x + p - 1) / p, size.y}, .color = p > 1 ? GLenum(GL_RGBA32F) : format});
+  if (scratch_ && size == scratchSize_ && format == scratchFormat_) return;
+  const int p = pack(format), l = layers(format);
+  // Packed or layered: the same bytes as the plain texture where the width is a multiple
+  // of the pack.
+  const int width = (size.x + p * l - 1) / (p * l);
+  scratchTarget_ = Framebuffer::create();
+  if (l > 1) {
+    scratch_ = Texture::create2DArray(format, width, size.y, l);
+    for (int layer = 0; layer < l; ++layer) scratchTarget_.attachColorLayer(layer, scratch_, layer);
+    scratchTarget_.finish({0, 1, 2, 3, 4, 5, 6, 7});
+    static_assert(kLayers == 8, "the draw buffers above list kLayers attachments");
+  } else {
+    scratch_ = Texture::create2D(p > 1 ? GLenum(GL_RGBA32F) : format, width, size.y);
+    scratchTarget_.attachColor(0, scratch_);
+    scratchTarget_.finish({0});
+  }
+  scratchSize_ = size;
+  scratchFormat_ = format;
 }
 
 void SeparableBlur::run(const Texture& moments, const Framebuffer& target, const std::vector<float>& weights) {
   const int radius = static_cast<int>(weights.size()) - 1;
-  const int p = pack(moments.internalFormat());
-  if (!rows_ || radius != radius_ || p != pack_) {
-    const auto program = [&](const char* step) {
+  const int p = pack(moments.internalFormat()), l = layers(moments.internalFormat());
+  if (!rows_ || radius != radius_ || p != pack_ || l != layers_) {
+    const auto program = [&](const char* step, bool columns) {
       return Program::graphics("testbed/render/fullscreen.vert", "techniques/prefiltered/blur.frag",
                                "#define BLUR_RADIUS " + std::to_string(radius) + "\n#define BLUR_STEP " + step +
-                                   "\n#define BLUR_PACK " + std::to_string(p) + "\n");
+                                   "\n#define BLUR_STEP_COLUMNS " + (columns ? "1" : "0") + "\n#define BLUR_PACK " +
+                                   std::to_string(p) + "\n#define BLUR_LAYERS " + std::to_string(l) + "\n");
     };
-    rows_ = program("ivec2(1, 0)");
-    columns_ = program("ivec2(0, 1)");
+    rows_ = program("ivec2(1, 0)", false);
+    columns_ = program("ivec2(0, 1)", true);
     radius_ = radius;
     pack_ = p;
+    layers_ = l;
   }
   for (const Program* program : {&rows_, &columns_}) {
     glProgramUniform1fv(program->id(), program->location("uWeights"), GLsizei(weights.size()), weights.data());
@@ -39,8 +70,8 @@ void SeparableBlur::run(const Texture& moments, const Framebuffer& target, const
   }
   const glm::ivec2 size(moments.width(), moments.height());
   glBindTextureUnit(0, moments.id());
-  screen_.draw(rows_, scratch_.framebuffer(), {scratch_.color().width(), size.y});
-  glBindTextureUnit(0, scratch_.color().id());
+  screen_.draw(rows_, scratchTarget_, {scratch_.width(), size.y});
+  glBindTextureUnit(0, scratch_.id());
   screen_.draw(columns_, target, size);
 }
 

@@ -1,10 +1,12 @@
 #pragma once
 // The moments pass's separable Gaussian (blur.frag): rows from the moments into a scratch
-// target, then columns back into the moments' framebuffer. For R32F and RG32F moments the
-// scratch target packs 4 or 2 row neighbours per RGBA32F texel (blur.frag's BLUR_PACK),
-// which cuts the row pass's fragments and fetches by about that factor and gives the same
-// result bit for bit as the plain scratch texture of the moments' own format
-// (blur_test.cpp compares the two); the other formats have no room to pack.
+// target, then columns back into the moments' framebuffer. The row pass runs one fragment
+// per several outputs and fetches their sources once: for R32F and RG32F moments the
+// scratch target packs 4 or 2 row neighbours per RGBA32F texel (blur.frag's BLUR_PACK);
+// the four-channel formats (RGBA32F, RGBA16) write kLayers row neighbours to as many
+// attachments, the layers of a scratch array of their own format (BLUR_LAYERS). Either
+// gives the same result bit for bit as the plain scratch texture of the moments' own
+// format (blur_test.cpp compares them).
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -28,12 +30,17 @@ class SeparableBlur {
   void run(const Texture& moments, const Framebuffer& target, const std::vector<float>& weights);
 
  private:
+  // Row outputs per fragment: channel packing (1 = none) and layers (1 = none).
   int pack(GLenum format) const;
+  int layers(GLenum format) const;
 
   bool packed_;
-  RenderTarget scratch_;
+  Texture scratch_;  // 2D, or a 2D array with layers
+  Framebuffer scratchTarget_;
+  glm::ivec2 scratchSize_{0};
+  GLenum scratchFormat_ = 0;
   Program rows_, columns_;
-  int radius_ = 0, pack_ = 0;  // what rows_ and columns_ were built for
+  int radius_ = 0, pack_ = 0, layers_ = 0;  // what rows_ and columns_ were built for
   ScreenPass screen_;
 };
 

@@ -1,9 +1,14 @@
 #version 450 core
 // Conservative rasterization of the silhouette edges into the silhouette map (viewport
 // (N + 1)², silhouette space, see silhouette_map.glsl) by vertex pulling: 6 vertices per
-// edge make a quad around the projected segment, widened and lengthened by 1 texel on
-// every side. Any texel the segment touches has its centre within √2/2 of the segment,
-// so it is rasterized (the paper's "thin quads"; the fragment shader drops the extras).
+// edge make a quad around the projected segment, widened and lengthened by kMargin texels
+// on every side. Any texel the segment touches has its centre within √2/2 of the
+// segment, so within √2/2 of it along and across, and it is rasterized (the paper's "thin
+// quads"; the fragment shader drops the extras). Only touched texels get a point
+// (silhouettePoint), so any margin over √2/2 writes the same map: 0.75 keeps the texel
+// centres 0.04 texels clear of the quad's edges, where the rasterizer's rule could drop
+// them, and shades a quarter (long edges) to a third (short ones) fewer fragments than a
+// margin of 1.
 layout(std430, binding = 0) readonly buffer Edges { vec4 endpoints[]; };
 uniform mat4 uLightViewProjection;
 uniform float uMapSize;  // N, the depth map's side
@@ -34,7 +39,8 @@ void main() {
   vB = silhouetteSpace(b);
   vec2 d = vB.xy - vA.xy;
   float len = length(d);
-  vec2 along = len > 1e-6 ? d / len : vec2(1.0, 0.0);
+  const float kMargin = 0.75;
+  vec2 along = kMargin * (len > 1e-6 ? d / len : vec2(1.0, 0.0));
   vec2 across = vec2(-along.y, along.x);
   vec2 p = (corner == 0 || corner == 3 ? vA.xy - along : vB.xy + along) + (corner < 2 ? -across : across);
   gl_Position = vec4(p / (uMapSize + 1.0) * 2.0 - 1.0, 0.0, 1.0);

@@ -112,6 +112,20 @@ Texture Texture::create2D(GLenum internalFormat, int width, int height, int leve
   return texture;
 }
 
+Texture Texture::create2DArray(GLenum internalFormat, int width, int height, int layers) {
+  if (width <= 0 || height <= 0 || layers <= 0) throw GlError("texture size must be positive");
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &id);
+  glTextureStorage3D(id, 1, internalFormat, width, height, layers);
+  Texture texture(id, std::uint64_t(width) * std::uint64_t(height) * std::uint64_t(layers) * bytesPerTexel(internalFormat),
+                  internalFormat, width, height, 1);
+  checkGlError("allocating a " + std::to_string(width) + "x" + std::to_string(height) + "x" +
+               std::to_string(layers) + " array texture");
+  texture.setFilter(GL_NEAREST, GL_NEAREST);
+  texture.setWrap(GL_CLAMP_TO_EDGE);
+  return texture;
+}
+
 void Texture::setFilter(GLenum minFilter, GLenum magFilter) const {
   glTextureParameteri(id(), GL_TEXTURE_MIN_FILTER, static_cast<GLint>(minFilter));
   glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, static_cast<GLint>(magFilter));
@@ -156,6 +170,10 @@ Framebuffer Framebuffer::create() { return Framebuffer(createName(glCreateFrameb
 
 void Framebuffer::attachColor(int index, const Texture& texture, int level) const {
   glNamedFramebufferTexture(id(), GL_COLOR_ATTACHMENT0 + index, texture.id(), level);
+}
+
+void Framebuffer::attachColorLayer(int index, const Texture& texture, int layer) const {
+  glNamedFramebufferTextureLayer(id(), GL_COLOR_ATTACHMENT0 + index, texture.id(), 0, layer);
 }
 
 void Framebuffer::attachDepth(const Texture& texture, int level) const {

@@ -78,6 +78,8 @@ class Texture : public GlObject {
   Texture() = default;
   // Immutable 2D storage; levels = 0 means a full mip chain.
   static Texture create2D(GLenum internalFormat, int width, int height, int levels = 1);
+  // Immutable 2D array storage, one level (a pass's layered scratch; readFloats is for 2D).
+  static Texture create2DArray(GLenum internalFormat, int width, int height, int layers);
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -109,6 +111,8 @@ class Framebuffer : public GlObject {
   Framebuffer() = default;
   static Framebuffer create();
   void attachColor(int index, const Texture& texture, int level = 0) const;
+  // One layer of an array texture (Texture::create2DArray) at colour attachment `index`.
+  void attachColorLayer(int index, const Texture& texture, int layer) const;
   // At the depth-stencil attachment for a format with stencil.
   void attachDepth(const Texture& texture, int level = 0) const;
   // Sets the draw buffers to the attached color indices and checks completeness.
