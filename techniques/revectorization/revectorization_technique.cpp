@@ -89,10 +89,12 @@ void SinglePassBase::configureCommon(const CommonParameters& parameters) {
 
 void SinglePassBase::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
   shadowMap_.render(in, timer);
+  renderInputs(shadowMap_.depth(), timer);
   const auto bind = [&](const Program& program) {
     bindReceiverInputs(program, in);
     common_.bindLibrary(program, shadowMap_.depth());
     setTechniqueUniforms(program);
+    bindInputs(program);
   };
   screen_.setDefines(shaderDefines());
   screen_.draw(in, out, timer, bind, "classify", "revectorize");

@@ -74,6 +74,10 @@ class SinglePassBase : public ShadowTechnique {
   virtual void setTechniqueUniforms(const Program& program) const = 0;
   // Compile-time settings of the screen pass's shaders.
   virtual std::string shaderDefines() const { return {}; }
+  // Passes of the technique's own between the shadow map and the screen pass (timed under
+  // their own names), and what they made bound to both screen-pass programs.
+  virtual void renderInputs(const Texture& /*shadowMap*/, PassTimer& /*timer*/) {}
+  virtual void bindInputs(const Program& /*program*/) const {}
   bool bothSides_;
 
  private:

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "techniques/revectorization/revectorization_technique.h"
+#include "techniques/revectorization/rpcf_tiles.h"
 #include "testbed/technique/registry.h"
 
 namespace testbed::revectorization {
@@ -12,7 +13,8 @@ namespace {
 const char* kCitation = "Macedo, Apolinário, Revectorization-Based Shadow Mapping, GI 2016";
 
 // A k×k box of revectorized taps: the kernel is compiled into the screen pass (rpcf.glsl),
-// so its tap loops unroll. P holds it as `kernel`.
+// so its tap loops unroll; the classifying draw reads the tile bounds (rpcf_tiles.h). P
+// holds the kernel as `kernel`.
 template <class P>
 class Rpcf : public SinglePassTechnique<P> {
  protected:
@@ -22,6 +24,12 @@ class Rpcf : public SinglePassTechnique<P> {
   std::string shaderDefines() const final {
     return "#define RPCF_KERNEL " + std::to_string(this->parameters_.kernel) + "\n";
   }
+  void renderInputs(const Texture& shadowMap, PassTimer& timer) final {
+    tiles_.render(shadowMap, this->parameters_.kernel, timer);
+  }
+  void bindInputs(const Program& program) const final { tiles_.bind(program); }
+
+  RpcfTiles tiles_;
 };
 
 struct RpcfSmsrParameters {

@@ -110,6 +110,32 @@ bool rpcfClassify(vec2 uv, float depth, bool bothSides, out float v) {
   return !edge;
 }
 
+#ifdef RPCF_KERNEL
+// The screen pass's classification (rpcf_tiles.h): uRpcfTiles holds the least and
+// greatest stored depth of each 2×2 texel tile with an apron of h = k/2 texels, i.e. of
+// the texels 2·tile − h … 2·tile + 1 + h a side. Two tiles side by side span k + 3
+// texels, and those from tile (c − 1)/2 (rounded down) span the block and its rim,
+// c − h − 1 … c + h + 1 around the centre c; four texelFetches read those 2×2 tiles'
+// bounds. Where the receiver's depth tests lit against the least of all four, or shadowed
+// against the greatest, every tap's texel and neighbour tests alike, so no tap is an edge
+// of either side and v is 1 or 0, the plain loop's sum of k² equal tests over k²; the
+// rest is left to the edge draw, as is a block that is not regular (rpcfClassify's
+// condition, which also keeps the four tiles inside the map).
+uniform sampler2D uRpcfTiles;
+
+bool rpcfTileClassify(vec2 uv, float depth, out float v) {
+  ivec2 centre = ivec2(floor(uv * vec2(uShadowMapSize)));
+  ivec2 first = (centre - 1) / 2;  // centre ≥ h + 1 ≥ 1 where the block is regular
+  vec2 b00 = texelFetch(uRpcfTiles, first, 0).rg, b10 = texelFetch(uRpcfTiles, first + ivec2(1, 0), 0).rg;
+  vec2 b01 = texelFetch(uRpcfTiles, first + ivec2(0, 1), 0).rg, b11 = texelFetch(uRpcfTiles, first + 1, 0).rg;
+  float z = depth - uBias;  // rvTest's
+  bool lit = z <= min(min(b00.x, b10.x), min(b01.x, b11.x));
+  bool shadowed = z > max(max(b00.y, b10.y), max(b01.y, b11.y));
+  v = lit ? 1.0 : 0.0;
+  return (lit || shadowed) && rpcfRegularBlock(uv, centre);
+}
+#endif
+
 // The edge draw's walk over the taps (shared work across RPCF's taps): the variant calls
 // its own tap visibility only on the edge taps that rpcfNextEdgeTap hands out, while the
 // other taps add their shadow test from the row masks. The sum runs in the same tap order

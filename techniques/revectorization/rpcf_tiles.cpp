@@ -1,0 +1,31 @@
+#include "techniques/revectorization/rpcf_tiles.h"
+
+#include <string>
+
+#include "testbed/render/shadow_map_pass.h"
+
+namespace testbed::revectorization {
+
+namespace {
+constexpr int kTilesUnit = 3;
+}
+
+void RpcfTiles::render(const Texture& shadowMap, int kernel, PassTimer& timer) {
+  if (kernel != kernel_ || !program_) {
+    kernel_ = kernel;
+    program_ = Program::graphics("testbed/render/fullscreen.vert", "techniques/revectorization/rpcf_tiles.frag",
+                                 "#define RPCF_APRON " + std::to_string(kernel / 2) + "\n");
+  }
+  const glm::ivec2 size((shadowMap.width() + 1) / 2, (shadowMap.height() + 1) / 2);
+  if (target_.ensure({.size = size, .color = GL_RG32F})) target_.color().setFilter(GL_NEAREST, GL_NEAREST);
+  auto scope = timer.scope("tile-bounds");
+  bindShadowMap(program_, shadowMap);
+  screen_.draw(program_, target_.framebuffer(), size);
+}
+
+void RpcfTiles::bind(const Program& program) const {
+  glBindTextureUnit(kTilesUnit, target_.color().id());
+  program.set("uRpcfTiles", kTilesUnit);
+}
+
+}  // namespace testbed::revectorization
