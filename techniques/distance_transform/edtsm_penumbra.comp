@@ -15,13 +15,15 @@ layout(r32ui, binding = 1) uniform uimage2D uTileKinds;
 layout(std430, binding = 2) readonly buffer Runs { ivec4 runs[]; };
 
 uint gKinds = 0u;  // this column's kinds in the current tile
+int gRunFrom;      // the first row of the current run
 
 void featureTransformStore(ivec2 pixel, ivec2 seed) {
   const vec2 v = penumbraIntensity(pixel, seed);
   imageStore(uIntensity, pixel, vec4(v, 0.0, 0.0));
   gKinds |= intensityKind(v);
-  // The rows come last to first, so a tile's first row is the last this column visits.
-  if (pixel.y % kTile == 0) {
+  // The rows come last to first, so a tile's first row is the last this column visits in
+  // it; a run may start inside a tile.
+  if (pixel.y % kTile == 0 || pixel.y == gRunFrom) {
     if (gKinds != 0u) imageAtomicOr(uTileKinds, pixel / kTile, gKinds);
     gKinds = 0u;
   }
@@ -32,11 +34,12 @@ void featureTransformStore(ivec2 pixel, ivec2 seed) {
 void main() {
   gColumn = int(gl_GlobalInvocationID.x);
   if (gColumn >= uSize.x) return;
-  const int tileRows = (uSize.y + kTile - 1) / kTile;
-  const int base = (gColumn / kTile) * (tileRows + 1);
+  const int tileRows = (uSize.y + kBandTile - 1) / kBandTile;
+  const int base = (gColumn / kBandTile) * (tileRows + 1);
   const int count = runs[base].x;
   for (int k = 0; k < count; ++k) {
     const ivec3 run = runs[base + 1 + k].xyz;  // rows [x, y), band R = z
+    gRunFrom = run.x;
     featureTransformColumnRange(run.x, run.y, max(run.x - run.z, 0), min(run.y + run.z, uSize.y), run.z);
   }
 }

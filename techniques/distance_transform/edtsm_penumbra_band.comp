@@ -1,7 +1,7 @@
 #version 450 core
 // The runs of tile rows where EDTSM's eq. 8 can change a pixel, one invocation per tile
 // column (edtsm_penumbra_band.h): per tile, R from its least receiver depth; the tile is
-// needed when a tile with a seed lies within ceil(R / kTile) tiles; consecutive needed
+// needed when a tile with a seed lies within ceil(R / kBandTile) tiles; consecutive needed
 // tiles make one run, with the largest R of its tiles.
 #include "techniques/distance_transform/edtsm_tiles.glsl"
 
@@ -46,13 +46,13 @@ void main() {
     int radius = -1;
     if (row < tiles.y && uHalfPenumbra > 0.0) {
       radius = bandRadius(ivec2(column, row));
-      if (radius >= 0 && !holdsSeedWithin(ivec2(column, row), (radius + kTile - 1) / kTile, tiles)) radius = -1;
+      if (radius >= 0 && !holdsSeedWithin(ivec2(column, row), (radius + kBandTile - 1) / kBandTile, tiles)) radius = -1;
     }
     if (radius >= 0) {
-      if (runRadius < 0) runs[base + 1 + count].x = row * kTile;  // a run starts
+      if (runRadius < 0) runs[base + 1 + count].x = row * kBandTile;  // a run starts
       runRadius = max(runRadius, radius);
     } else if (runRadius >= 0) {  // a run ends before this row
-      runs[base + 1 + count].yz = ivec2(min(row * kTile, uSize.y), runRadius);
+      runs[base + 1 + count].yz = ivec2(min(row * kBandTile, uSize.y), runRadius);
       ++count;
       runRadius = -1;
     }

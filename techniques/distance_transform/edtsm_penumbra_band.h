@@ -17,7 +17,7 @@
 //   does (least distance, then least row, then least column): where the nearest seed is
 //   within R(p) both find it; elsewhere both leave the hard answer.
 // - A tile needs that work only if a tile holding a seed lies within ceil(R / 32) tiles,
-//   R from its nearest receiver (least camera depth).
+//   R from its nearest receiver (least camera depth), tiles of 16×16 pixels.
 // The feature transform's row pass (edtsm_seeds.comp) records, per tile, whether it holds a
 // seed, its least receiver depth and the filter's kinds of the hard visibility; a
 // one-invocation-per-tile-column pass (edtsm_penumbra_band.comp) turns them into runs of
@@ -32,7 +32,7 @@ namespace testbed::distance_transform {
 
 class PenumbraBand {
  public:
-  static constexpr int kTile = 32;  // kTile of edtsm_tiles.glsl
+  static constexpr int kTile = 16;  // kBandTile of edtsm_tiles.glsl
 
   // Makes (and books) the per-tile images and the runs for `size` pixels, clears them and
   // binds the images for the row pass: seeds at image unit 2, least depth at unit 3.

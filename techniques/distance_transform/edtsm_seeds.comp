@@ -16,7 +16,8 @@ layout(r32ui, binding = 3) uniform uimage2D uTileMinDepth;  // cleared to ~0 bef
 vec2 gBefore[3], gAt[3], gAfter[3];
 // This row's record of the current tile; the depth as bits (non-negative floats order as
 // their bits do).
-uint gTileKinds = 0u, gTileSeed = 0u, gTileMinDepth = 0xFFFFFFFFu;
+uint gTileKinds = 0u;                                   // per kTile
+uint gTileSeed = 0u, gTileMinDepth = 0xFFFFFFFFu;  // per kBandTile
 
 void fetchColumn(ivec2 pixel, out vec2 column[3]) {
   for (int dy = -1; dy <= 1; ++dy) column[dy + 1] = fetchWithDepth(uHard, pixel + ivec2(0, dy));
@@ -38,12 +39,15 @@ bool featureTransformIsSeed(ivec2 pixel) {
   gTileKinds |= intensityKind(centre);
   if (seed) gTileSeed = 1u;
   if (!(centre.y < 0.0)) gTileMinDepth = min(gTileMinDepth, floatBitsToUint(centre.y));
-  if (pixel.x % kTile == kTile - 1 || pixel.x == textureSize(uHard, 0).x - 1) {
-    const ivec2 tile = pixel / kTile;
-    if (gTileKinds != 0u) imageAtomicOr(uTileKinds, tile, gTileKinds);
+  const bool last = pixel.x == textureSize(uHard, 0).x - 1;
+  if (pixel.x % kTile == kTile - 1 || last) {
+    if (gTileKinds != 0u) imageAtomicOr(uTileKinds, pixel / kTile, gTileKinds);
+    gTileKinds = 0u;
+  }
+  if (pixel.x % kBandTile == kBandTile - 1 || last) {
+    const ivec2 tile = pixel / kBandTile;
     if (gTileSeed != 0u) imageAtomicOr(uTileSeeds, tile, 1u);
     if (gTileMinDepth != 0xFFFFFFFFu) imageAtomicMin(uTileMinDepth, tile, gTileMinDepth);
-    gTileKinds = 0u;
     gTileSeed = 0u;
     gTileMinDepth = 0xFFFFFFFFu;
   }
