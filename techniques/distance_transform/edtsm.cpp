@@ -119,8 +119,12 @@ void EdtShadowMapping::renderReference(const FrameInputs& in, PassTimer& timer, 
 void EdtShadowMapping::renderFused(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
   {
     // The seeds inside the feature transform's row pass (edtsm_seeds.comp), eq. 8 inside
-    // its column pass (edtsm_penumbra.comp), which also gathers the mean filter's tiles.
+    // its column pass (edtsm_penumbra.comp), which also gathers the mean filter's tiles;
+    // the column pass works only where eq. 8 can change a pixel (edtsm_penumbra_band.h),
+    // the hard visibility copied elsewhere.
     auto scope = timer.scope("edt");
+    glCopyImageSubData(hard_.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, intensity_.color().id(), GL_TEXTURE_2D, 0, 0, 0,
+                       0, in.size.x, in.size.y, 1);
     glBindTextureUnit(4, hard_.color().id());
     bindScreenInputs(seedRows_, in);
     seedRows_.set("uHard", 4);
@@ -129,7 +133,10 @@ void EdtShadowMapping::renderFused(const FrameInputs& in, PassTimer& timer, cons
     penumbraColumns_.set("uPenumbra", parameters_.penumbra);
     glBindImageTexture(0, intensity_.color().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
     filterTiles_.begin(in.size, 1);
-    featureTransform_.run(in.size, seedRows_, penumbraColumns_);
+    band_.begin(in.size);
+    featureTransform_.run(in.size, seedRows_, penumbraColumns_,
+                          [&] { band_.findRuns(parameters_.penumbra, in.camera.projection); });
+    band_.end();
     glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
     glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
   }

@@ -8,7 +8,8 @@
 //                visibility), the exact screen-space feature transform (each pixel's
 //                nearest seed) and eq. 8 on the world-space distance to that seed: the
 //                transform's row pass tells the seeds, its column pass applies eq. 8 as it
-//                finds each nearest seed (edtsm_seeds.comp, edtsm_penumbra.comp)
+//                finds each nearest seed (edtsm_seeds.comp, edtsm_penumbra.comp), on the
+//                rows where eq. 8 can change a pixel only (edtsm_penumbra_band.h)
 //   mean-filter  the edge-aware separable mean filter (eqs. 9–10), two draws over the
 //                tiles where it can change a pixel (edtsm_filter_tiles.h)
 // With `reference` set, the straightforward pipeline, same output: a full-screen pass per
@@ -17,6 +18,7 @@
 // shadow mapping", Computers & Graphics 71 (2018).
 // GI 2017: Macedo & Apolinário, "Euclidean Distance Transform Shadow Mapping", Graphics Interface 2017.
 #include "techniques/distance_transform/edtsm_filter_tiles.h"
+#include "techniques/distance_transform/edtsm_penumbra_band.h"
 #include "techniques/distance_transform/feature_transform.h"
 #include "techniques/revectorization/revectorization_technique.h"
 #include "testbed/gl/render_target.h"
@@ -61,6 +63,7 @@ class EdtShadowMapping : public WithParameters<EdtsmParameters> {
   ScreenPass screen_;
   FeatureTransformPass featureTransform_;
   FilterTiles filterTiles_;
+  PenumbraBand band_;
   revectorization::EdgeSplitPass rbsmPass_{"techniques/distance_transform/edtsm_rbsm.frag"};
   Program seedsProgram_, penumbraProgram_, filterProgram_;  // the reference pipeline
   Program seedRows_, penumbraColumns_, filterTilesProgram_;

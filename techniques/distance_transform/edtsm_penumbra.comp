@@ -1,24 +1,29 @@
 #version 450 core
 // EDTSM's penumbra (edtsm_penumbra.glsl) evaluated by the feature transform's column pass
 // the moment it finds each pixel's nearest seed, so the seed never goes through an image
-// and the penumbra needs no draw of its own. On the way it ORs, per tile, the kinds of
-// intensity the receivers hold, for the mean filter's tiles (edtsm_filter_tiles.h).
+// and the penumbra needs no draw of its own. The column's envelope is built and eq. 8
+// evaluated only on the runs of rows where eq. 8 can change a pixel (edtsm_penumbra_band.h);
+// the other pixels keep the hard visibility copied into uIntensity before. On the way it
+// ORs, per tile, the kinds of intensity the pixels it writes hold, for the mean filter's
+// tiles (edtsm_filter_tiles.h); the row pass ORed the hard visibility's.
 #include "techniques/distance_transform/edtsm_penumbra.glsl"
+#include "techniques/distance_transform/edtsm_tiles.glsl"
 
 layout(rg32f, binding = 0) uniform writeonly image2D uIntensity;
-layout(r32ui, binding = 1) uniform uimage2D uTileKinds;  // cleared to 0 before
-
-const int kTile = 32;  // FilterTiles::kTile
+layout(r32ui, binding = 1) uniform uimage2D uTileKinds;
+// edtsm_penumbra_band.comp's runs: per tile column, (count, ...), then (first row, end row, R, 0).
+layout(std430, binding = 2) readonly buffer Runs { ivec4 runs[]; };
 
 uint gKinds = 0u;  // this column's kinds in the current tile
+int gRunFrom;      // the first row of the current run
 
 void featureTransformStore(ivec2 pixel, ivec2 seed) {
   const vec2 v = penumbraIntensity(pixel, seed);
   imageStore(uIntensity, pixel, vec4(v, 0.0, 0.0));
-  // Depth −1 takes no part, as in the filter; +0 and 1 exactly, or anything else.
-  if (!(v.y < 0.0)) gKinds |= floatBitsToUint(v.x) == 0u ? 1u : v.x == 1.0 ? 2u : 4u;
-  // The rows come last to first, so a tile's first row is the last this column visits.
-  if (pixel.y % kTile == 0) {
+  gKinds |= intensityKind(v);
+  // The rows come last to first, so a tile's first row is the last this column visits in
+  // it; a run may start inside a tile.
+  if (pixel.y % kTile == 0 || pixel.y == gRunFrom) {
     if (gKinds != 0u) imageAtomicOr(uTileKinds, pixel / kTile, gKinds);
     gKinds = 0u;
   }
@@ -26,4 +31,15 @@ void featureTransformStore(ivec2 pixel, ivec2 seed) {
 
 #include "techniques/distance_transform/feature_transform_envelope.glsl"
 
-void main() { featureTransformColumn(); }
+void main() {
+  gColumn = int(gl_GlobalInvocationID.x);
+  if (gColumn >= uSize.x) return;
+  const int tileRows = (uSize.y + kBandTile - 1) / kBandTile;
+  const int base = (gColumn / kBandTile) * (tileRows + 1);
+  const int count = runs[base].x;
+  for (int k = 0; k < count; ++k) {
+    const ivec3 run = runs[base + 1 + k].xyz;  // rows [x, y), band R = z
+    gRunFrom = run.x;
+    featureTransformColumnRange(run.x, run.y, max(run.x - run.z, 0), min(run.y + run.z, uSize.y), run.z);
+  }
+}

@@ -1,11 +1,23 @@
 #version 450 core
 // EDTSM's seeds (edtsm_seeds.glsl) found by the feature transform's row pass itself
 // (feature_transform_row_sweep.glsl), so they need neither a draw nor a mask: a 3×3
-// window of the hard visibility slides along the row, three fetches a pixel.
+// window of the hard visibility slides along the row, three fetches a pixel. On the way
+// it records, per tile, what edtsm_penumbra_band.h needs (whether the tile holds a seed,
+// its least receiver depth) and the mean filter's kinds of the hard visibility
+// (edtsm_filter_tiles.h), one atomic each per row of a tile.
 #include "techniques/distance_transform/edtsm_seeds.glsl"
+#include "techniques/distance_transform/edtsm_tiles.glsl"
+
+layout(r32ui, binding = 1) uniform uimage2D uTileKinds;     // cleared to 0 before
+layout(r32ui, binding = 2) uniform uimage2D uTileSeeds;     // cleared to 0 before
+layout(r32ui, binding = 3) uniform uimage2D uTileMinDepth;  // cleared to ~0 before
 
 // Columns x - 1, x and x + 1 of the window, each rows y - 1, y and y + 1.
 vec2 gBefore[3], gAt[3], gAfter[3];
+// This row's record of the current tile; the depth as bits (non-negative floats order as
+// their bits do).
+uint gTileKinds = 0u;                                   // per kTile
+uint gTileSeed = 0u, gTileMinDepth = 0xFFFFFFFFu;  // per kBandTile
 
 void fetchColumn(ivec2 pixel, out vec2 column[3]) {
   for (int dy = -1; dy <= 1; ++dy) column[dy + 1] = fetchWithDepth(uHard, pixel + ivec2(0, dy));
@@ -24,6 +36,21 @@ bool featureTransformIsSeed(ivec2 pixel) {
   for (int dy = 0; dy < 3; ++dy)
     seed = seed || seedNeighbour(centre, gBefore[dy]) || seedNeighbour(centre, gAt[dy]) ||
            seedNeighbour(centre, gAfter[dy]);
+  gTileKinds |= intensityKind(centre);
+  if (seed) gTileSeed = 1u;
+  if (!(centre.y < 0.0)) gTileMinDepth = min(gTileMinDepth, floatBitsToUint(centre.y));
+  const bool last = pixel.x == textureSize(uHard, 0).x - 1;
+  if (pixel.x % kTile == kTile - 1 || last) {
+    if (gTileKinds != 0u) imageAtomicOr(uTileKinds, pixel / kTile, gTileKinds);
+    gTileKinds = 0u;
+  }
+  if (pixel.x % kBandTile == kBandTile - 1 || last) {
+    const ivec2 tile = pixel / kBandTile;
+    if (gTileSeed != 0u) imageAtomicOr(uTileSeeds, tile, 1u);
+    if (gTileMinDepth != 0xFFFFFFFFu) imageAtomicMin(uTileMinDepth, tile, gTileMinDepth);
+    gTileSeed = 0u;
+    gTileMinDepth = 0xFFFFFFFFu;
+  }
   return seed;
 }
 

@@ -49,12 +49,14 @@ TEST_F(Edtsm, PassesAndMemory) {
 // The fast path (eq. 8 inside the feature transform's column pass, the mean filter drawn
 // on the tiles where it can change a pixel) against the straightforward one (`reference`:
 // a draw per step over the whole screen), bit for bit: every bundled scene, windows wider
-// than a tile, narrow ones, wide penumbrae, no penumbra, no filter.
+// than a tile, narrow ones, wide penumbrae, one wider than the nearest receivers' depth
+// (the penumbra band unbounded there, edtsm_penumbra_band.h), no penumbra, no filter.
 TEST_F(Edtsm, FastPathMatchesTheReferencePipelineBitForBit) {
   const std::vector<Assignments> variants{{},
                                           {{"filter_width", "4"}, {"max_filter_radius", "40"}},
                                           {{"penumbra", "4"}, {"max_filter_radius", "3"}},
                                           {{"penumbra", "0"}},
+                                          {{"penumbra", "80"}, {"filter_width", "0"}},
                                           {{"filter_width", "0"}}};
   for (const std::string name : {"bunny", "wall", "fence", "dragon_sun", "stacked_occluders"}) {
     const Scene scene = test::bundledScene(name);

@@ -34,9 +34,11 @@ void FeatureTransformPass::run(const Texture& seeds, glm::ivec2 size) {
   checkGlError("feature transform");
 }
 
-void FeatureTransformPass::run(glm::ivec2 size, const Program& rowsProgram, const Program& columnsProgram) {
+void FeatureTransformPass::run(glm::ivec2 size, const Program& rowsProgram, const Program& columnsProgram,
+                               const std::function<void()>& between) {
   prepare(size);
   rows(rowsProgram);
+  if (between) between();
   columns(columnsProgram);
   checkGlError("feature transform");
 }

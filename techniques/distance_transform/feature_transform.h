@@ -10,6 +10,7 @@
 // Huttenlocher 2012): pass 1 finds, per row, the nearest seed column; pass 2 takes, per
 // column, the lower envelope of the parabolas (y - y')² + dx(y')² over the rows y'. All
 // arithmetic is in int32, so the result is exact, unlike jump flooding.
+#include <functional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -32,7 +33,8 @@ class FeatureTransformPass {
   // on feature_transform_envelope.glsl that consumes each pixel's nearest seed itself, so
   // nearest() is not written. The caller binds their textures, images and uniforms; uSize
   // and the buffers are bound here, and image writes are made visible as run()'s are.
-  void run(glm::ivec2 size, const Program& rows, const Program& columns);
+  // `between`, if set, runs after the row pass's writes are made visible, before `columns`.
+  void run(glm::ivec2 size, const Program& rows, const Program& columns, const std::function<void()>& between = {});
 
   // RG32I, `size` texels: (x, y) texel coordinates of the nearest seed, or (-1, -1). Valid
   // after the first run(); its writes are made visible to texel fetches, image loads and read-backs.

@@ -9,7 +9,8 @@
 // The including shader defines, before including this file,
 //   void featureTransformStore(ivec2 pixel, ivec2 seed)
 // given each pixel's nearest seed, (-1, -1) when the image has none, for the rows of one
-// column from the last to the first; its main() calls featureTransformColumn().
+// column from the last to the first; its main() calls featureTransformColumn(), or sets
+// gColumn and calls featureTransformColumnRange() (a band of rows, below).
 layout(local_size_x = 64) in;
 
 uniform ivec2 uSize;
@@ -26,15 +27,19 @@ int g(int i) {
 }
 int f(int y, int i, int gi) { return (y - i) * (y - i) + gi * gi; }
 
-void featureTransformColumn() {
-  gColumn = int(gl_GlobalInvocationID.x);
-  if (gColumn >= uSize.x) return;
+// The envelope of the rows u in [rowsFrom, rowsTo) whose g(u) <= maxG, built for the rows
+// [from, to) only and stored for those (from <= rowsFrom is not needed; rows outside the
+// output range still win inside it). Rows are visited in increasing order, so on a tie the
+// smaller row keeps it: the result is the least (distance², row) over the rows taken, with
+// the row's own tie (the left seed) from pass 1. With every row taken (maxG >=
+// uSize.x + uSize.y) it is the exact transform of the column.
+void featureTransformColumnRange(int from, int to, int rowsFrom, int rowsTo, int maxG) {
   // Build: the stack holds the envelope's parabolas in row order, each with the first row
   // where it is the minimum; the top one wins up to the last row seen.
-  int top = 0;
-  envelope[gColumn] = ivec2(0, 0);
-  for (int u = 1; u < uSize.y; ++u) {
+  int top = -1;
+  for (int u = rowsFrom; u < rowsTo; ++u) {
     const int gu = g(u);
+    if (gu > maxG) continue;
     // Pop parabolas that u beats (strictly) where they start to win.
     while (top >= 0) {
       const ivec2 e = envelope[top * uSize.x + gColumn];
@@ -43,22 +48,32 @@ void featureTransformColumn() {
     }
     if (top < 0) {
       top = 0;
-      envelope[gColumn] = ivec2(u, 0);
+      envelope[gColumn] = ivec2(u, from);
     } else {
       // u wins strictly from floor(sep) + 1 on, sep = ((u² - i²) + (g(u)² - g(i)²)) / 2(u - i);
-      // the top still wins (or ties) at its own start >= 0, so the numerator is >= 0 and
-      // integer division floors.
+      // the top still wins (or ties) at its own start >= from >= 0, so the numerator is >= 0
+      // and integer division floors.
       const int i = envelope[top * uSize.x + gColumn].x;
       const int gi = g(i);
       const int start = 1 + ((u * u - i * i) + (gu * gu - gi * gi)) / (2 * (u - i));
-      if (start < uSize.y) envelope[(++top) * uSize.x + gColumn] = ivec2(u, start);
+      if (start < to) envelope[(++top) * uSize.x + gColumn] = ivec2(u, start);
     }
   }
   // Walk the rows from the last to the first, popping a parabola once past its start.
-  for (int y = uSize.y - 1; y >= 0; --y) {
-    const ivec2 e = envelope[top * uSize.x + gColumn];
-    const int seedX = rowNearest[e.x * uSize.x + gColumn];
-    featureTransformStore(ivec2(gColumn, y), seedX < 0 ? ivec2(-1) : ivec2(seedX, e.x));
-    if (y == e.y) --top;
+  for (int y = to - 1; y >= from; --y) {
+    ivec2 seed = ivec2(-1);
+    if (top >= 0) {
+      const ivec2 e = envelope[top * uSize.x + gColumn];
+      const int seedX = rowNearest[e.x * uSize.x + gColumn];
+      if (seedX >= 0) seed = ivec2(seedX, e.x);
+      if (y == e.y) --top;
+    }
+    featureTransformStore(ivec2(gColumn, y), seed);
   }
+}
+
+void featureTransformColumn() {
+  gColumn = int(gl_GlobalInvocationID.x);
+  if (gColumn >= uSize.x) return;
+  featureTransformColumnRange(0, uSize.y, 0, uSize.y, uSize.x + uSize.y);
 }
