@@ -16,7 +16,7 @@
 //   every seed within R(p) of each of its pixels and breaks ties as the full transform
 //   does (least distance, then least row, then least column): where the nearest seed is
 //   within R(p) both find it; elsewhere both leave the hard answer.
-// - A tile needs that work only if a tile holding a seed lies within ceil(R / 32) tiles,
+// - A tile needs that work only if a tile holding a seed lies within ceil(R / 16) tiles,
 //   R from its nearest receiver (least camera depth), tiles of 16×16 pixels.
 // The feature transform's row pass (edtsm_seeds.comp) records, per tile, whether it holds a
 // seed, its least receiver depth and the filter's kinds of the hard visibility; a
