@@ -3,7 +3,7 @@
 // of the family for a list of light-space samples (uv, light depth), without a G-buffer.
 // uFunction: 0 shadow test, 1 smsr, 2 rsmss, 3 rpcf-smsr, 4 rpcf-rsmss (uImproved and
 // uKernel as the techniques set them); 5 rpcf-smsr and 6 rpcf-rsmss as their screen pass
-// computes them (classified from the row masks, else the edge taps only); 7 rvClassify and
+// computes them (classified from the tile bounds of rpcf_tiles.h, else the edge taps only); 7 rvClassify and
 // 8 rvClassifyFetched (uImproved as bothSides), packed as rvPackClassified; 9 row uRow of
 // rpcfBlockTests and 10 rpcfRowTests of that row, as taps | rim << k.
 layout(local_size_x = 64) in;
@@ -32,8 +32,8 @@ void main() {
     case 2: v = rsmssVisibility(uv, z); break;
     case 3: v = rpcfSmsrVisibility(uv, z); break;
     case 4: v = rpcfRsmssVisibility(uv, z); break;
-    case 5: if (!rpcfSmsrClassify(uv, z, v)) v = rpcfSmsrEdgeVisibility(uv, z); break;
-    case 6: if (!rpcfRsmssClassify(uv, z, v)) v = rpcfRsmssEdgeVisibility(uv, z); break;
+    case 5: if (!rpcfTileClassify(uv, z, v)) v = rpcfSmsrEdgeVisibility(uv, z); break;
+    case 6: if (!rpcfTileClassify(uv, z, v)) v = rpcfRsmssEdgeVisibility(uv, z); break;
     case 7: v = rvPackClassified(rvClassify(uv, z, uImproved == 1)); break;
     case 8: v = rvPackClassified(rvClassifyFetched(uv, z, uImproved == 1)); break;
     case 9: {

@@ -10,10 +10,13 @@
 #include <cstdio>
 #include <functional>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "techniques/revectorization/rpcf_tiles.h"
 #include "testbed/gl/objects.h"
+#include "testbed/gl/pass_timer.h"
 #include "tests/gl_fixture.h"
 
 namespace testbed {
@@ -44,6 +47,7 @@ class Probe {
  public:
   explicit Probe(int size = kSize) : size_(size) {
     test::sharedContext();
+    tiles_.emplace();
     program_ = Program::compute("techniques/revectorization/probe.comp");
     map_ = Texture::create2D(GL_R32F, size, size);
     map_.setFilter(GL_NEAREST, GL_NEAREST);
@@ -64,6 +68,13 @@ class Probe {
     for (const auto& p : points) samples.emplace_back(p / float(size_), kReceiver, 0.0f);
     Buffer in = Buffer::create(samples.size() * sizeof(glm::vec4), samples.data());
     Buffer out = Buffer::create(samples.size() * sizeof(float), nullptr);
+    if (function == kRpcfSmsrScreen || function == kRpcfRsmssScreen) {
+      // The tile bounds the screen pass classifies from, for this kernel (rpcf_tiles.h).
+      PassTimer timer;
+      tiles_->render(map_, o.kernel, timer);
+      timer.resolve();
+      tiles_->bind(program_);
+    }
     program_.use();
     glBindTextureUnit(2, map_.id());
     program_.set("uShadowMap", 2);
@@ -90,6 +101,7 @@ class Probe {
   int size_;
   Program program_;
   Texture map_;
+  std::optional<revectorization::RpcfTiles> tiles_;  // made once the context is current
 };
 
 Probe& probe() {
@@ -419,7 +431,7 @@ TEST(RevectorizationGlsl, GatheredRpcfRowsEqualFetched) {
   });
 }
 
-// The screen pass's RPCF (classified from the row masks, else the edge taps only, each
+// The screen pass's RPCF (classified from the tile bounds, else the edge taps only, each
 // classified from the masks, or by rvClassify where the block leaves the map) gives the
 // plain k×k loop's very number, on the whole map and beyond its border.
 TEST(RevectorizationGlsl, RpcfScreenPassEqualsThePlainLoop) {

@@ -88,29 +88,6 @@ uint rpcfRowEdges(uint below, uvec2 row, uint above, bool bothSides) {
   return differs & (bothSides ? rpcfTapBits() : (row.x & rpcfTapBits()));
 }
 
-// True, with the filtered v, where no tap's texel is an edge of the sides the variant
-// traverses (`bothSides`); false sends the pixel to the edge draw. The taps' k×k block and
-// its one-texel rim are tested once, as row masks shared by neighbouring taps
-// (rpcfBlockTests: (k+3)²/4 gathers, not 5k² fetches). Taps that are not edges are their
-// shadow tests, 0 or 1, whose sum is an exact integer in any order, so v is the very
-// number the visibility functions give.
-bool rpcfClassify(vec2 uv, float depth, bool bothSides, out float v) {
-  ivec2 centre = ivec2(floor(uv * vec2(uShadowMapSize)));
-  v = 0.0;
-  if (!rpcfRegularBlock(uv, centre)) return false;
-  uvec2 rows[kRpcfRows];
-  rpcfBlockTests(centre, depth, rows);
-  uint lit = 0u;
-  bool edge = false;
-  for (int i = 1; i <= uKernel; ++i) {  // the tap rows
-    edge = edge || rpcfRowEdges(rows[i - 1].x, rows[i], rows[i + 1].x, bothSides) != 0u;
-    lit += uint(bitCount(rows[i].x & rpcfTapBits()));
-  }
-  v = float(lit) / float(uKernel * uKernel);
-  return !edge;
-}
-
-#ifdef RPCF_KERNEL
 // The screen pass's classification (rpcf_tiles.h): uRpcfTiles holds the least and
 // greatest stored depth of each 2×2 texel tile with an apron of h = k/2 texels, i.e. of
 // the texels 2·tile − h … 2·tile + 1 + h a side. Two tiles side by side span k + 3
@@ -119,8 +96,9 @@ bool rpcfClassify(vec2 uv, float depth, bool bothSides, out float v) {
 // bounds. Where the receiver's depth tests lit against the least of all four, or shadowed
 // against the greatest, every tap's texel and neighbour tests alike, so no tap is an edge
 // of either side and v is 1 or 0, the plain loop's sum of k² equal tests over k²; the
-// rest is left to the edge draw, as is a block that is not regular (rpcfClassify's
-// condition, which also keeps the four tiles inside the map).
+// rest is left to the edge draw, as is a block that is not regular (rpcfRegularBlock,
+// which also keeps the four tiles inside the map). Both variants: a block that tests
+// alike has no edge of either side.
 uniform sampler2D uRpcfTiles;
 
 bool rpcfTileClassify(vec2 uv, float depth, out float v) {
@@ -134,7 +112,6 @@ bool rpcfTileClassify(vec2 uv, float depth, out float v) {
   v = lit ? 1.0 : 0.0;
   return (lit || shadowed) && rpcfRegularBlock(uv, centre);
 }
-#endif
 
 // The edge draw's walk over the taps (shared work across RPCF's taps): the variant calls
 // its own tap visibility only on the edge taps that rpcfNextEdgeTap hands out, while the

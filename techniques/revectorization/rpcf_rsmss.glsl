@@ -5,8 +5,6 @@
 #include "techniques/revectorization/rsmss.glsl"
 #include "techniques/revectorization/rpcf.glsl"
 
-bool rpcfRsmssClassify(vec2 uv, float depth, out float v) { return rpcfClassify(uv, depth, true, v); }
-
 DEFINE_KERNEL_MEAN(rpcfRsmssVisibility, rsmssVisibility)
 
 // The same number as rpcfRsmssVisibility, computing only the edge taps (rpcfNextEdgeTap).

@@ -6,8 +6,6 @@
 #include "techniques/revectorization/smsr.glsl"
 #include "techniques/revectorization/rpcf.glsl"
 
-bool rpcfSmsrClassify(vec2 uv, float depth, out float v) { return rpcfClassify(uv, depth, uImproved == 1, v); }
-
 DEFINE_KERNEL_MEAN(rpcfSmsrVisibility, smsrVisibility)
 
 // The same number as rpcfSmsrVisibility, computing only the edge taps (rpcfNextEdgeTap).
