@@ -23,29 +23,15 @@ int SeparableBlur::layers(GLenum format) const {
 
 void SeparableBlur::ensure(glm::ivec2 size, GLenum format, bool blurred) {
   if (!blurred) {
-    scratch_ = Texture();
-    scratchTarget_ = Framebuffer();
-    scratchSize_ = glm::ivec2(0);
+    scratch_ = RenderTarget();
     return;
   }
-  if (scratch_ && size == scratchSize_ && format == scratchFormat_) return;
   const int p = pack(format), l = layers(format);
   // Packed or layered: the same bytes as the plain texture where the width is a multiple
   // of the pack.
-  const int width = (size.x + p * l - 1) / (p * l);
-  scratchTarget_ = Framebuffer::create();
-  if (l > 1) {
-    scratch_ = Texture::create2DArray(format, width, size.y, l);
-    for (int layer = 0; layer < l; ++layer) scratchTarget_.attachColorLayer(layer, scratch_, layer);
-    scratchTarget_.finish({0, 1, 2, 3, 4, 5, 6, 7});
-    static_assert(kLayers == 8, "the draw buffers above list kLayers attachments");
-  } else {
-    scratch_ = Texture::create2D(p > 1 ? GLenum(GL_RGBA32F) : format, width, size.y);
-    scratchTarget_.attachColor(0, scratch_);
-    scratchTarget_.finish({0});
-  }
-  scratchSize_ = size;
-  scratchFormat_ = format;
+  scratch_.ensure({.size = {(size.x + p * l - 1) / (p * l), size.y},
+                   .color = p > 1 ? GLenum(GL_RGBA32F) : format,
+                   .colorLayers = l > 1 ? l : 0});
 }
 
 void SeparableBlur::run(const Texture& moments, const Framebuffer& target, const std::vector<float>& weights) {
@@ -70,8 +56,8 @@ void SeparableBlur::run(const Texture& moments, const Framebuffer& target, const
   }
   const glm::ivec2 size(moments.width(), moments.height());
   glBindTextureUnit(0, moments.id());
-  screen_.draw(rows_, scratchTarget_, {scratch_.width(), size.y});
-  glBindTextureUnit(0, scratch_.id());
+  screen_.draw(rows_, scratch_.framebuffer(), {scratch_.color().width(), size.y});
+  glBindTextureUnit(0, scratch_.color().id());
   screen_.draw(columns_, target, size);
 }
 

@@ -35,10 +35,7 @@ class SeparableBlur {
   int layers(GLenum format) const;
 
   bool packed_;
-  Texture scratch_;  // 2D, or a 2D array with layers
-  Framebuffer scratchTarget_;
-  glm::ivec2 scratchSize_{0};
-  GLenum scratchFormat_ = 0;
+  RenderTarget scratch_;  // 2D, or a 2D array with layers
   Program rows_, columns_;
   int radius_ = 0, pack_ = 0, layers_ = 0;  // what rows_ and columns_ were built for
   ScreenPass screen_;

@@ -182,7 +182,7 @@ void Framebuffer::attachDepth(const Texture& texture, int level) const {
   glNamedFramebufferTexture(id(), stencil ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, texture.id(), level);
 }
 
-void Framebuffer::finish(std::initializer_list<int> colorIndices) const {
+void Framebuffer::finish(const std::vector<int>& colorIndices) const {
   std::vector<GLenum> buffers;
   for (int index : colorIndices) buffers.push_back(GL_COLOR_ATTACHMENT0 + index);
   if (buffers.empty()) {

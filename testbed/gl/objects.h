@@ -116,7 +116,7 @@ class Framebuffer : public GlObject {
   // At the depth-stencil attachment for a format with stencil.
   void attachDepth(const Texture& texture, int level = 0) const;
   // Sets the draw buffers to the attached color indices and checks completeness.
-  void finish(std::initializer_list<int> colorIndices) const;
+  void finish(const std::vector<int>& colorIndices) const;
 
  private:
   explicit Framebuffer(GLuint id);

@@ -13,6 +13,7 @@ struct TargetLayout {
   glm::ivec2 size{0};
   GLenum color = 0;   // owned colour texture at attachment 0 (0: none)
   int colorLevels = 1;  // its mip levels (0: the full chain)
+  int colorLayers = 0;  // > 0: a 2D array of that many layers instead, layer i at attachment i
   GLenum depth = 0;   // owned depth or depth-stencil texture (0: none)
   const Texture* borrowedColor = nullptr;  // attached at 0 instead of an owned colour
   const Texture* borrowedDepth = nullptr;  // attached instead of an owned depth
@@ -33,7 +34,7 @@ class RenderTarget {
  private:
   glm::ivec2 size_{0};
   GLenum colorFormat_ = 0, depthFormat_ = 0;
-  int colorLevels_ = 1;
+  int colorLevels_ = 1, colorLayers_ = 0;
   GLuint borrowedColor_ = 0, borrowedDepth_ = 0;
   Texture color_, depth_;
   Framebuffer framebuffer_;

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "tests/gl_fixture.h"
 
 namespace testbed {
@@ -34,6 +36,26 @@ TEST_F(RenderTargets, RemakesOnlyWhenSizeOrFormatChangesAndBooksOwnedBytes) {
   EXPECT_TRUE(target.ensure({.size = {4, 4}, .color = GL_R8, .colorLevels = 0}));
   EXPECT_EQ(target.color().levels(), 3);
   EXPECT_EQ(ledger.bytes(), 21u);
+}
+
+// colorLayers: one array texture, its layer i drawn at colour attachment i.
+TEST_F(RenderTargets, LayeredColourDrawsEachLayerAtItsAttachment) {
+  GpuMemoryLedger ledger;
+  GpuMemoryLedger::Scope scope(ledger);
+  RenderTarget target;
+  EXPECT_TRUE(target.ensure({.size = {2, 2}, .color = GL_R32F, .colorLayers = 3}));
+  EXPECT_EQ(ledger.bytes(), 2u * 2u * 4u * 3u);
+  EXPECT_FALSE(target.ensure({.size = {2, 2}, .color = GL_R32F, .colorLayers = 3}));
+  for (int layer = 0; layer < 3; ++layer) {
+    const float value = float(layer + 1);
+    glClearNamedFramebufferfv(target.framebuffer().id(), GL_COLOR, layer, &value);
+  }
+  std::vector<float> texels(2 * 2 * 3);
+  glGetTextureImage(target.color().id(), 0, GL_RED, GL_FLOAT, GLsizei(texels.size() * sizeof(float)), texels.data());
+  for (int layer = 0; layer < 3; ++layer)
+    for (int i = 0; i < 4; ++i) EXPECT_EQ(texels[layer * 4 + i], float(layer + 1)) << "layer " << layer;
+  EXPECT_TRUE(target.ensure({.size = {2, 2}, .color = GL_R32F}));  // back to a plain 2D texture
+  EXPECT_EQ(ledger.bytes(), 2u * 2u * 4u);
 }
 
 TEST_F(RenderTargets, BorrowedTexturesAreAttachedNotBookedAndFollowed) {
