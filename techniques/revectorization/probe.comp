@@ -33,8 +33,8 @@ void main() {
     case 2: v = rsmssVisibility(uv, z); break;
     case 3: v = rpcfSmsrVisibility(uv, z); break;
     case 4: v = rpcfRsmssVisibility(uv, z); break;
-    case 5: if (!rpcfTileClassify(uv, z, uImproved == 1, v)) v = rpcfSmsrEdgeVisibility(uv, z); break;
-    case 6: if (!rpcfTileClassify(uv, z, true, v)) v = rpcfRsmssEdgeVisibility(uv, z); break;
+    case 5: if (!rpcfTileClassify(uv, z, v)) v = rpcfSmsrEdgeVisibility(uv, z); break;
+    case 6: if (!rpcfTileClassify(uv, z, v)) v = rpcfRsmssEdgeVisibility(uv, z); break;
     case 7: v = rvPackClassified(rvClassify(uv, z, uImproved == 1)); break;
     case 8: v = rvPackClassified(rvClassifyFetched(uv, z, uImproved == 1)); break;
     case 9: {

@@ -72,7 +72,7 @@ class Probe {
     if (function == kRpcfSmsrScreen || function == kRpcfRsmssScreen) {
       // The tile bounds the screen pass classifies from, for this kernel (rpcf_tiles.h).
       PassTimer timer;
-      tiles_->render(map_, o.kernel, o.improved || function == kRpcfRsmssScreen, timer);
+      tiles_->render(map_, o.kernel, timer);
       timer.resolve();
       tiles_->bind(program_);
     }

@@ -68,7 +68,7 @@ class SinglePassBase : public ShadowTechnique {
 
  protected:
   // `fragmentKey`: the technique's shader; `bothSides`: whether exiting discontinuities
-  // take part (the debug view and RPCF's tile bounds; the shader decides for itself).
+  // take part (debug view only; the shader decides for itself).
   SinglePassBase(std::string fragmentKey, bool bothSides) : bothSides_(bothSides), screen_(std::move(fragmentKey)) {}
   void configureCommon(const CommonParameters& parameters);
   virtual void setTechniqueUniforms(const Program& program) const = 0;

@@ -25,7 +25,7 @@ class Rpcf : public SinglePassTechnique<P> {
     return "#define RPCF_KERNEL " + std::to_string(this->parameters_.kernel) + "\n";
   }
   void renderInputs(const Texture& shadowMap, PassTimer& timer) final {
-    tiles_.render(shadowMap, this->parameters_.kernel, this->bothSides_, timer);
+    tiles_.render(shadowMap, this->parameters_.kernel, timer);
   }
   void bindInputs(const Program& program) const final { tiles_.bind(program); }
 

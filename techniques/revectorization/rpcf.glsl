@@ -100,38 +100,27 @@ uint rpcfRowEdges(uint below, uvec2 row, uint above, bool bothSides) {
   return differs & (bothSides ? rpcfTapBits() : (row.x & rpcfTapBits()));
 }
 
-// The screen pass's classification (rpcf_tiles.h): uRpcfTiles holds, per tile of one
-// column and the rows 2y, 2y + 1, the least stored depth over the k + 2 columns of a block
-// centred on that column and its rim, and the greatest over the same columns (both sides)
-// or the k taps' columns only (`bothSides` false: conservative SMSR, whose shadowed taps
-// are never edges). The block's rows and rim c.y − h − 1 … c.y + h + 1 around the centre c
-// lie in the (k + 3)/2 tiles of column c.x from row pair (c.y − h − 1)/2 (rounded down),
-// one row to spare at one end. Where the receiver's depth tests lit against the least of
-// them, every tap's texel and neighbour test lit; where it tests shadowed against the
-// greatest of the tiles holding rows of the taps (or of the block and rim), every tap is
-// shadowed (and so is every neighbour, with both sides): either way no tap is an edge of
-// the sides traversed and v is 1 or 0, the plain loop's sum of k² equal tap values over
-// k². The rest is left to the edge draw, as is a block that is not regular
-// (rpcfRegularBlock, which also keeps the tiles read inside the map).
+// The screen pass's classification (rpcf_tiles.h): uRpcfTiles holds the least and
+// greatest stored depth of each 2×2 texel tile with an apron of h = k/2 texels, i.e. of
+// the texels 2·tile − h … 2·tile + 1 + h a side. Two tiles side by side span k + 3
+// texels, and those from tile (c − 1)/2 (rounded down) span the block and its rim,
+// c − h − 1 … c + h + 1 around the centre c; four texelFetches read those 2×2 tiles'
+// bounds. Where the receiver's depth tests lit against the least of all four, or shadowed
+// against the greatest, every tap's texel and neighbour tests alike, so no tap is an edge
+// of either side and v is 1 or 0, the plain loop's sum of k² equal tests over k²; the
+// rest is left to the edge draw, as is a block that is not regular (rpcfRegularBlock,
+// which also keeps the four tiles inside the map). Both variants: a block that tests
+// alike has no edge of either side.
 uniform sampler2D uRpcfTiles;
 
-bool rpcfTileClassify(vec2 uv, float depth, bool bothSides, out float v) {
-  int h = uKernel / 2;
+bool rpcfTileClassify(vec2 uv, float depth, out float v) {
   ivec2 centre = ivec2(floor(uv * vec2(uShadowMapSize)));
-  int top = centre.y - h - 1;  // the rim's row; ≥ 0 where the block is regular
-  ivec2 tile = ivec2(clamp(centre.x, 0, uShadowMapSize.x - 1), max(top, 0) / 2);
-  // The rows whose texels must test shadowed: the taps' (or also the rim's).
-  int first = bothSides ? top : top + 1, last = bothSides ? top + uKernel + 1 : top + uKernel;
+  ivec2 first = (centre - 1) / 2;  // centre ≥ h + 1 ≥ 1 where the block is regular
+  vec2 b00 = texelFetch(uRpcfTiles, first, 0).rg, b10 = texelFetch(uRpcfTiles, first + ivec2(1, 0), 0).rg;
+  vec2 b01 = texelFetch(uRpcfTiles, first + ivec2(0, 1), 0).rg, b11 = texelFetch(uRpcfTiles, first + 1, 0).rg;
   float z = depth - uBias;  // rvTest's
-  float least = 2.0, greatest = -1.0;  // depths lie in [0, 1]
-  for (int i = 0; i < (uKernel + 3) / 2; ++i) {
-    vec2 b = texelFetch(uRpcfTiles, tile + ivec2(0, i), 0).rg;
-    int row = 2 * (tile.y + i);  // the tile's rows: row, row + 1
-    least = min(least, b.x);
-    if (row + 1 >= first && row <= last) greatest = max(greatest, b.y);
-  }
-  bool lit = z <= least;
-  bool shadowed = z > greatest;
+  bool lit = z <= min(min(b00.x, b10.x), min(b01.x, b11.x));
+  bool shadowed = z > max(max(b00.y, b10.y), max(b01.y, b11.y));
   v = lit ? 1.0 : 0.0;
   return (lit || shadowed) && rpcfRegularBlock(uv, centre);
 }

@@ -6,7 +6,7 @@
 
 float screenVisibility(ivec2 pixel, Receiver r, vec3 light) { return rpcfSmsrEdgeVisibility(light.xy, light.z); }
 bool screenClassify(ivec2 pixel, Receiver r, vec3 light, out float v) {
-  return rpcfTileClassify(light.xy, light.z, uImproved == 1, v);
+  return rpcfTileClassify(light.xy, light.z, v);
 }
 
 #include "testbed/glsl/screen_pass.glsl"

@@ -10,16 +10,13 @@ namespace {
 constexpr int kTilesUnit = 3;
 }
 
-void RpcfTiles::render(const Texture& shadowMap, int kernel, bool bothSides, PassTimer& timer) {
-  if (kernel != kernel_ || bothSides != bothSides_ || !program_) {
+void RpcfTiles::render(const Texture& shadowMap, int kernel, PassTimer& timer) {
+  if (kernel != kernel_ || !program_) {
     kernel_ = kernel;
-    bothSides_ = bothSides;
     program_ = Program::graphics("testbed/render/fullscreen.vert", "techniques/revectorization/rpcf_tiles.frag",
-                                 "#define RPCF_APRON " + std::to_string(kernel / 2) + "\n" +
-                                     (bothSides ? "#define RPCF_BOTH_SIDES 1\n" : ""));
+                                 "#define RPCF_APRON " + std::to_string(kernel / 2) + "\n");
   }
-  // One tile per column and row pair.
-  const glm::ivec2 size(shadowMap.width(), (shadowMap.height() + 1) / 2);
+  const glm::ivec2 size((shadowMap.width() + 1) / 2, (shadowMap.height() + 1) / 2);
   if (target_.ensure({.size = size, .color = GL_RG32F})) target_.color().setFilter(GL_NEAREST, GL_NEAREST);
   auto scope = timer.scope("tile-bounds");
   bindShadowMap(program_, shadowMap);
