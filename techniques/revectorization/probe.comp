@@ -5,7 +5,8 @@
 // uKernel as the techniques set them); 5 rpcf-smsr and 6 rpcf-rsmss as their screen pass
 // computes them (classified from the tile bounds of rpcf_tiles.h, else the edge taps only); 7 rvClassify and
 // 8 rvClassifyFetched (uImproved as bothSides), packed as rvPackClassified; 9 row uRow of
-// rpcfBlockTests and 10 rpcfRowTests of that row, as taps | rim << k.
+// rpcfBlockTests and 10 rpcfRowTests of that row, as taps | rim << k; 11 rpcfRegularBlock and
+// 12 rpcfRegularBlockPlain (1 regular, 0 not).
 layout(local_size_x = 64) in;
 #include "techniques/revectorization/rpcf_smsr.glsl"
 #include "techniques/revectorization/rpcf_rsmss.glsl"
@@ -47,6 +48,8 @@ void main() {
       v = float(row.x | (row.y << uint(uKernel)));
       break;
     }
+    case 11: v = rpcfRegularBlock(uv, ivec2(floor(uv * vec2(uShadowMapSize)))) ? 1.0 : 0.0; break;
+    case 12: v = rpcfRegularBlockPlain(uv, ivec2(floor(uv * vec2(uShadowMapSize)))) ? 1.0 : 0.0; break;
     default: v = shadowTest(uv, z, uBias); break;
   }
   results[i] = v;

@@ -74,25 +74,35 @@ vec3 rvCompress(vec4 d, float s) {
 // origin + dir (read by the caller's classification; storedFirst unread outside the map).
 int rvComputeRD(ivec2 origin, ivec2 dir, float z, float s, vec4 dOrigin, float storedOrigin, float storedFirst) {
   ivec2 beside = abs(dir.yx);  // the perpendicular axis, towards +
-  bool towardsPositive = dir.x + dir.y > 0;
   ivec2 t = origin + dir;
   if (!rvInsideMap(t)) return -1;
+  // Loop invariants, so a step does only its tests: the origin's discontinuity in the
+  // step's own order (behind, ahead, beside −, beside +), and whether the rows (columns)
+  // beside the walk lie inside the map (a step's texel is inside, so its neighbours
+  // beside are iff their row is).
+  bool towardsPositive = dir.x + dir.y > 0;
+  vec2 originAlong = dir.x != 0 ? dOrigin.xy : dOrigin.zw;
+  vec4 wanted = vec4(towardsPositive ? originAlong : originAlong.yx, dir.x != 0 ? dOrigin.zw : dOrigin.xy);
+  bool lowInside = rvInsideMap(origin - beside), highInside = rvInsideMap(origin + beside);
+  bool s1 = s == 1.0;
   float storedBehind = storedOrigin;
   float stored = storedFirst;
   int n = 1;
   for (int i = 0; i < uMaxSearch; ++i) {
-    if (!rvInsideMap(t)) return -n;
     if (abs(z - stored) < uEpsilon) z -= uEpsilon;
-    float st = z - uBias <= stored ? 1.0 : 0.0;
-    if (st != s) return n;
+    float zb = z - uBias;  // rvTest's
+    if ((zb <= stored) != s1) return n;
     ivec2 ahead = t + dir;
-    float storedAhead = rvInsideMap(ahead) ? rvStoredDepth(ahead) : 0.0;
-    float behindDiffers = abs(rvTest(z, storedBehind) - s);  // behind is inside: origin or last step
-    float aheadDiffers = rvInsideMap(ahead) ? abs(rvTest(z, storedAhead) - s) : 0.0;
-    vec2 along = towardsPositive ? vec2(behindDiffers, aheadDiffers) : vec2(aheadDiffers, behindDiffers);
-    vec2 across = vec2(rvDiffers(t - beside, z, s), rvDiffers(t + beside, z, s));
-    vec4 d = dir.x != 0 ? vec4(along, across) : vec4(across, along);
-    if (dot(d, dOrigin) == 0.0) return -n;
+    bool aheadInside = rvInsideMap(ahead);
+    float storedAhead = aheadInside ? rvStoredDepth(ahead) : 0.0;
+    float storedLow = lowInside ? rvStoredDepth(t - beside) : 0.0;
+    float storedHigh = highInside ? rvStoredDepth(t + beside) : 0.0;
+    // |test − s| of behind (inside: the origin or the last step), ahead and beside; 0
+    // outside the map.
+    bvec4 differs = bvec4((zb <= storedBehind) != s1, aheadInside && (zb <= storedAhead) != s1,
+                          lowInside && (zb <= storedLow) != s1, highInside && (zb <= storedHigh) != s1);
+    if (dot(vec4(differs), wanted) == 0.0) return -n;
+    if (!aheadInside) return -(n + 1);
     storedBehind = stored;
     stored = storedAhead;
     t = ahead;

@@ -31,6 +31,7 @@ enum Function {
   kRpcfSmsrScreen = 5, kRpcfRsmssScreen = 6,  // as the screen pass computes them
   kClassify = 7, kClassifyFetched = 8,         // rvClassify's s, d, edge (packed), two ways
   kBlockRow = 9, kFetchedRow = 10,             // RPCF's row masks (packed), two ways
+  kRegularBlock = 11, kRegularBlockPlain = 12, // RPCF's block check, two ways
 };
 
 struct Options {
@@ -429,6 +430,29 @@ TEST(RevectorizationGlsl, GatheredRpcfRowsEqualFetched) {
       EXPECT_GT(partial, 0);  // rows that straddle the edge
     }
   });
+}
+
+// RPCF's block check from the k diagonal taps equals the k² taps' one, also where rounding
+// of a tap's uv moves it to the next texel: receivers a few ulps either side of texel
+// boundaries, on a map whose texel size 1/48 is no power of two, and near the map's border.
+TEST(RevectorizationGlsl, RpcfRegularBlockFromTheDiagonalEqualsAllTaps) {
+  constexpr int kOddSize = 48;
+  static Probe p(kOddSize);
+  std::vector<glm::vec2> points;
+  for (int y = 0; y < kOddSize; y += 5)
+    for (int x = 0; x < kOddSize; ++x)
+      for (const float nudge : {-3e-6f, -4e-7f, 0.0f, 4e-7f, 3e-6f}) {
+        points.emplace_back((x + nudge) * (1.0f / kOddSize) * kOddSize, y + 0.5f);
+        points.emplace_back(x + nudge, y + nudge);
+        points.emplace_back(y + 0.37f, x + nudge);
+      }
+  for (const int k : {1, 3, 5, 7}) {
+    SCOPED_TRACE("kernel " + std::to_string(k));
+    const auto diagonal = p.run(kRegularBlock, points, {.kernel = k});
+    EXPECT_EQ(diagonal, p.run(kRegularBlockPlain, points, {.kernel = k}));
+    EXPECT_GT(std::count(diagonal.begin(), diagonal.end(), 1.0f), 0);
+    EXPECT_GT(std::count(diagonal.begin(), diagonal.end(), 0.0f), 0);
+  }
 }
 
 // The screen pass's RPCF (classified from the tile bounds, else the edge taps only, each

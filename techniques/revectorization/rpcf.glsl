@@ -68,7 +68,19 @@ void rpcfBlockTests(ivec2 centre, float depth, out uvec2 rows[kRpcfRows]) {
 // Whether the taps' texels, computed as the variants' visibility functions compute them
 // (kernelTapUv), form the k×k block around `centre` with a one-texel rim
 // inside the map: then the row masks below describe every tap exactly.
+// kernelTapUv works per component, so the column of tap (x, y)'s texel depends on x alone
+// and its row on y alone: all k² taps land right iff the k taps (i, i) of the diagonal
+// do, which is k checks instead of k² (rpcfRegularBlockPlain, the straightforward one, is
+// what the unit tests compare it with).
 bool rpcfRegularBlock(vec2 uv, ivec2 centre) {
+  int h = uKernel / 2;
+  vec2 size = vec2(uShadowMapSize);
+  bool regular = rvInsideMap(centre - ivec2(h + 1)) && rvInsideMap(centre + ivec2(h + 1));
+  for (int i = -h; i <= h; ++i) regular = regular && ivec2(floor(kernelTapUv(uv, i, i) * size)) == centre + ivec2(i);
+  return regular;
+}
+
+bool rpcfRegularBlockPlain(vec2 uv, ivec2 centre) {
   int h = uKernel / 2;
   vec2 size = vec2(uShadowMapSize);
   bool regular = rvInsideMap(centre - ivec2(h + 1)) && rvInsideMap(centre + ivec2(h + 1));
