@@ -89,11 +89,13 @@ void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsF
   {
     auto scope = timer.scope("moments");
     filtered = sampled(in);
-    ScissorTo scissor(blurred ? blur_.reads(filtered, format.internalFormat, parameters_.blur / 2, size.x) : filtered);
+    // The clears cover the whole map: a scissored clear is drawn as a quad on Mesa, a whole
+    // one is llvmpipe's per-tile fill.
     const float farDepth = 1.0f;
     glDepthMask(GL_TRUE);  // the clear obeys the write mask
     glClearNamedFramebufferfv(moments_.framebuffer().id(), GL_DEPTH, 0, &farDepth);
     glClearNamedFramebufferfv(moments_.framebuffer().id(), GL_COLOR, 0, &far_[0]);
+    ScissorTo scissor(blurred ? blur_.reads(filtered, format.internalFormat, parameters_.blur / 2, size.x) : filtered);
 
     glBindFramebuffer(GL_FRAMEBUFFER, moments_.framebuffer().id());
     glViewport(0, 0, size.x, size.y);

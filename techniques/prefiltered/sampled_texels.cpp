@@ -64,9 +64,9 @@ void forEachVertex(const std::vector<Plane>& planes, F&& vertex) {
 
 }  // namespace
 
-TexelRect TexelRect::grown(glm::ivec2 by, int size) const {
+TexelRect TexelRect::grown(glm::ivec2 by, glm::ivec2 size) const {
   if (empty()) return *this;
-  return {glm::max(min - by, glm::ivec2(0)), glm::min(max + by, glm::ivec2(size - 1))};
+  return {glm::max(min - by, glm::ivec2(0)), glm::min(max + by, size - 1)};
 }
 
 ScissorTo::ScissorTo(const TexelRect& rect) {
@@ -117,7 +117,7 @@ TexelRect sampledTexels(const std::vector<WorldBox>& boxes, const glm::mat4& cam
   if (!(low.x <= high.x)) return {};
   const double n = mapSize;
   const TexelRect read{glm::ivec2(glm::floor(low * n - 0.5)), glm::ivec2(glm::floor(high * n - 0.5)) + 1};
-  return read.grown(glm::ivec2(margin), mapSize);
+  return read.grown(glm::ivec2(margin), glm::ivec2(mapSize));
 }
 
 }  // namespace testbed

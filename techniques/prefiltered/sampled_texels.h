@@ -27,8 +27,8 @@ namespace testbed {
 struct TexelRect {
   glm::ivec2 min{0}, max{-1};
   bool empty() const { return max.x < min.x || max.y < min.y; }
-  // Grown by `by` texels on each side, clamped to a map of side `size`.
-  TexelRect grown(glm::ivec2 by, int size) const;
+  // Grown by `by` texels on each side, clamped to a map of `size` texels.
+  TexelRect grown(glm::ivec2 by, glm::ivec2 size) const;
   bool operator==(const TexelRect&) const = default;
 };
 

@@ -38,7 +38,7 @@ TexelRect SeparableBlur::reads(const TexelRect& region, GLenum format, int radiu
   if (region.empty()) return region;
   const int group = pack(format) * layers(format);
   const TexelRect rows{{region.min.x / group * group, region.min.y}, {region.max.x / group * group + group - 1, region.max.y}};
-  return rows.grown(glm::ivec2(radius), size);
+  return rows.grown(glm::ivec2(radius), glm::ivec2(size));
 }
 
 void SeparableBlur::run(const Texture& moments, const Framebuffer& target, const std::vector<float>& weights,
@@ -68,8 +68,8 @@ void SeparableBlur::run(const Texture& moments, const Framebuffer& target, const
     // The scratch texels the column pass reads: the groups holding the region's columns,
     // `radius` rows either side.
     const int group = p * l;
-    const TexelRect rows{{region.min.x / group, region.min.y - radius}, {region.max.x / group, region.max.y + radius}};
-    ScissorTo scissor(region.empty() ? region : TexelRect{glm::max(rows.min, glm::ivec2(0)), glm::min(rows.max, glm::ivec2(scratch_.color().width(), size.y) - 1)});
+    const TexelRect groups{{region.min.x / group, region.min.y}, {region.max.x / group, region.max.y}};
+    ScissorTo scissor(groups.grown({0, radius}, {scratch_.color().width(), size.y}));
     screen_.draw(rows_, scratch_.framebuffer(), {scratch_.color().width(), size.y});
   }
   glBindTextureUnit(0, scratch_.color().id());
