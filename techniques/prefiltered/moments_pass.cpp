@@ -64,6 +64,25 @@ TexelRect MomentsPass::sampled(const FrameInputs& in) {
   return sampledTexels(boxes_, in.camera.viewProjection(), in.light, n, kSampledMargin);
 }
 
+void MomentsPass::clear(const TexelRect& drawn) {
+  const float farDepth = 1.0f;
+  if (drawn == TexelRect{glm::ivec2(0), glm::ivec2(moments_.color().width() - 1)}) {
+    // The whole map: llvmpipe's per-tile fill.
+    glDepthMask(GL_TRUE);  // the clear obeys the write mask
+    glClearNamedFramebufferfv(moments_.framebuffer().id(), GL_DEPTH, 0, &farDepth);
+    glClearNamedFramebufferfv(moments_.framebuffer().id(), GL_COLOR, 0, &far_[0]);
+    return;
+  }
+  // A part of it (a scissored clear would be drawn as a quad on Mesa): the same values, the
+  // colour converted from the floats as the framebuffer clear converts them.
+  if (drawn.empty()) return;
+  const glm::ivec2 extent = drawn.max - drawn.min + 1;
+  glClearTexSubImage(moments_.depth().id(), 0, drawn.min.x, drawn.min.y, 0, extent.x, extent.y, 1, GL_DEPTH_COMPONENT,
+                     GL_FLOAT, &farDepth);
+  glClearTexSubImage(moments_.color().id(), 0, drawn.min.x, drawn.min.y, 0, extent.x, extent.y, 1, GL_RGBA, GL_FLOAT,
+                     &far_[0]);
+}
+
 void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsFormat& format,
                          const glm::vec4& params) {
   if (!encode_ || format != format_) {
@@ -89,13 +108,9 @@ void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsF
   {
     auto scope = timer.scope("moments");
     filtered = sampled(in);
-    // The clears cover the whole map: a scissored clear is drawn as a quad on Mesa, a whole
-    // one is llvmpipe's per-tile fill.
-    const float farDepth = 1.0f;
-    glDepthMask(GL_TRUE);  // the clear obeys the write mask
-    glClearNamedFramebufferfv(moments_.framebuffer().id(), GL_DEPTH, 0, &farDepth);
-    glClearNamedFramebufferfv(moments_.framebuffer().id(), GL_COLOR, 0, &far_[0]);
-    ScissorTo scissor(blurred ? blur_.reads(filtered, format.internalFormat, parameters_.blur / 2, size.x) : filtered);
+    const TexelRect drawn = blurred ? blur_.reads(filtered, format.internalFormat, parameters_.blur / 2, size.x) : filtered;
+    clear(drawn);
+    ScissorTo scissor(drawn);
 
     glBindFramebuffer(GL_FRAMEBUFFER, moments_.framebuffer().id());
     glViewport(0, 0, size.x, size.y);

@@ -57,6 +57,8 @@ class MomentsPass {
   // bits the full-map draw stored (scripts/bit_identical.sh against the draw).
   void updateFarTexel(const MomentsFormat& format, const glm::vec4& params);
 
+  // Clears the texels the moments pass draws to the far plane's moments and depth.
+  void clear(const TexelRect& drawn);
   // The moments texels the visibility pass can read this frame (the whole map with mips).
   TexelRect sampled(const FrameInputs& in);
 
