@@ -2,28 +2,15 @@
 
 namespace testbed {
 
-SilhouetteFaces silhouetteFaces(const MeshTopology& mesh) {
-  const std::size_t faces = mesh.corners.size() / 3;
-  SilhouetteFaces out;
-  out.normals.reserve(faces);
-  out.centroids.reserve(faces);
-  for (std::size_t f = 0; f < faces; ++f) {
-    const glm::vec3 &a = mesh.corners[3 * f], &b = mesh.corners[3 * f + 1], &c = mesh.corners[3 * f + 2];
-    out.normals.push_back(glm::cross(b - a, c - a));
-    out.centroids.push_back((a + b + c) / 3.0f);
-  }
-  return out;
-}
-
-std::size_t appendSilhouetteEdges(const MeshTopology& mesh, const SilhouetteFaces& faceData, const LightTransforms& light,
-                                  std::vector<glm::vec4>& out) {
+std::size_t appendSilhouetteEdges(const MeshTopology& mesh, const LightTransforms& light, std::vector<glm::vec4>& out) {
   const std::size_t faces = mesh.corners.size() / 3;
   // +1 towards, −1 away, 0 degenerate.
   std::vector<signed char> facing(faces, 0);
   for (std::size_t f = 0; f < faces; ++f) {
-    const glm::vec3& normal = faceData.normals[f];
+    const glm::vec3 &a = mesh.corners[3 * f], &b = mesh.corners[3 * f + 1], &c = mesh.corners[3 * f + 2];
+    const glm::vec3 normal = glm::cross(b - a, c - a);
     if (normal == glm::vec3(0)) continue;
-    const glm::vec3 towardsLight = light.orthographic ? -light.direction : light.position - faceData.centroids[f];
+    const glm::vec3 towardsLight = light.orthographic ? -light.direction : light.position - (a + b + c) / 3.0f;
     facing[f] = glm::dot(normal, towardsLight) > 0 ? 1 : -1;
   }
   std::size_t count = 0;

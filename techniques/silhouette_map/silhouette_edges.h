@@ -14,21 +14,8 @@
 
 namespace testbed {
 
-// What the facing test needs of each face and does not depend on the light, computed once
-// per mesh: the unnormalized normal cross(b − a, c − a) (0 for a degenerate face) and the
-// centroid, the very floats the per-light loop would compute again.
-struct SilhouetteFaces {
-  std::vector<glm::vec3> normals, centroids;
-};
-SilhouetteFaces silhouetteFaces(const MeshTopology& mesh);
-
 // Appends each silhouette edge once as two world-space points (w = 1) to `out`.
-// Returns the number of edges appended. `faces` is silhouetteFaces(mesh).
-std::size_t appendSilhouetteEdges(const MeshTopology& mesh, const SilhouetteFaces& faces, const LightTransforms& light,
-                                  std::vector<glm::vec4>& out);
-inline std::size_t appendSilhouetteEdges(const MeshTopology& mesh, const LightTransforms& light,
-                                         std::vector<glm::vec4>& out) {
-  return appendSilhouetteEdges(mesh, silhouetteFaces(mesh), light, out);
-}
+// Returns the number of edges appended.
+std::size_t appendSilhouetteEdges(const MeshTopology& mesh, const LightTransforms& light, std::vector<glm::vec4>& out);
 
 }  // namespace testbed

@@ -54,8 +54,7 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
  private:
   void configured() override { shadowMap_.configure(parameters_.shadowMap); }
 
-  // Programs, the (N + 1)² silhouette map and the scene's adjacency and face normals, made
-  // once (the geometry is static; what depends on the light is found every frame).
+  // Programs, the (N + 1)² silhouette map and the scene's adjacency, made once.
   void prepare(const FrameInputs& in) {
     if (!edgeProgram_) {
       edgeProgram_ = Program::graphics("techniques/silhouette_map/silhouette_map_edges.vert",
@@ -67,11 +66,7 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
     silhouettes_.ensure({.size = glm::ivec2(side), .color = GL_RG16});
     if (topologyScene_ != &in.scene || topology_.size() != in.scene.objects.size()) {
       topology_.clear();
-      faces_.clear();
-      for (const auto& object : in.scene.objects) {
-        topology_.push_back(meshTopology(object.mesh));
-        faces_.push_back(silhouetteFaces(topology_.back()));
-      }
+      for (const auto& object : in.scene.objects) topology_.push_back(meshTopology(object.mesh));
       topologyScene_ = &in.scene;
     }
   }
@@ -80,8 +75,7 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
     // Silhouettes depend on the light, so they are found every frame (the notes' CPU loop).
     endpoints_.clear();
     std::size_t edges = 0;
-    for (std::size_t i = 0; i < topology_.size(); ++i)
-      edges += appendSilhouetteEdges(topology_[i], faces_[i], in.light, endpoints_);
+    for (const auto& mesh : topology_) edges += appendSilhouetteEdges(mesh, in.light, endpoints_);
     const std::size_t bytes = endpoints_.size() * sizeof(glm::vec4);
     if (bytes > edgeBuffer_.bytes()) edgeBuffer_ = Buffer::create(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
     if (bytes > 0) glNamedBufferSubData(edgeBuffer_.id(), 0, static_cast<GLsizeiptr>(bytes), endpoints_.data());
@@ -113,7 +107,6 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
   Buffer edgeBuffer_;
   std::vector<glm::vec4> endpoints_;
   std::vector<MeshTopology> topology_;
-  std::vector<SilhouetteFaces> faces_;  // of topology_'s meshes
   const Scene* topologyScene_ = nullptr;
 };
 
