@@ -44,20 +44,24 @@ void appendBox(const WorldBox& box, std::vector<Plane>& planes) {
 template <class F>
 void forEachVertex(const std::vector<Plane>& planes, F&& vertex) {
   const std::size_t n = planes.size();
+  // The normals' pairwise cross products, each used by n − 2 triples.
+  std::vector<glm::dvec3> cross(n * n);
+  std::vector<double> length(n);
+  for (std::size_t a = 0; a < n; ++a) {
+    length[a] = glm::length(glm::dvec3(planes[a]));
+    for (std::size_t b = a + 1; b < n; ++b) cross[a * n + b] = glm::cross(glm::dvec3(planes[a]), glm::dvec3(planes[b]));
+  }
   for (std::size_t a = 0; a < n; ++a)
     for (std::size_t b = a + 1; b < n; ++b)
       for (std::size_t c = b + 1; c < n; ++c) {
-        const glm::dvec3 na(planes[a]), nb(planes[b]), nc(planes[c]);
-        const glm::dvec3 bc = glm::cross(nb, nc), ca = glm::cross(nc, na), ab = glm::cross(na, nb);
-        const double det = glm::dot(na, bc);
-        if (std::abs(det) <= 1e-12 * glm::length(na) * glm::length(nb) * glm::length(nc)) continue;
+        const glm::dvec3 bc = cross[b * n + c], ca = -cross[a * n + c], ab = cross[a * n + b];
+        const double det = glm::dot(glm::dvec3(planes[a]), bc);
+        if (std::abs(det) <= 1e-12 * length[a] * length[b] * length[c]) continue;
         const glm::dvec3 p = -(planes[a].w * bc + planes[b].w * ca + planes[c].w * ab) / det;
+        const double size = glm::length(p);
         bool inside = true;
-        for (const Plane& plane : planes)
-          if (value(plane, p) < -1e-9 * (glm::length(glm::dvec3(plane)) * glm::length(p) + std::abs(plane.w))) {
-            inside = false;
-            break;
-          }
+        for (std::size_t i = 0; i < n && inside; ++i)
+          inside = value(planes[i], p) >= -1e-9 * (length[i] * size + std::abs(planes[i].w));
         if (inside) vertex(p);
       }
 }
