@@ -7,6 +7,9 @@ namespace testbed {
 namespace {
 
 constexpr int kMaxBlur = 17;  // GI 2016 Table 5 prefilters 17×17
+// Texels added on each side of the sampled region (sampled_texels.h), against the GPU's
+// rounding of the receivers' light-space uv.
+constexpr int kSampledMargin = 2;
 
 }  // namespace
 
@@ -51,6 +54,35 @@ void MomentsPass::updateFarTexel(const MomentsFormat& format, const glm::vec4& p
   farValid_ = true;
 }
 
+TexelRect MomentsPass::sampled(const FrameInputs& in) {
+  const int n = in.shadowMapSize;
+  if (parameters_.mips) return {glm::ivec2(0), glm::ivec2(n - 1)};
+  if (boxesScene_ != &in.scene) {
+    boxes_ = objectBoxes(in.scene);
+    boxesScene_ = &in.scene;
+  }
+  return sampledTexels(boxes_, in.camera.viewProjection(), in.light, n, kSampledMargin);
+}
+
+void MomentsPass::clear(const TexelRect& drawn) {
+  const float farDepth = 1.0f;
+  if (drawn == TexelRect{glm::ivec2(0), glm::ivec2(moments_.color().width() - 1)}) {
+    // The whole map: llvmpipe's per-tile fill.
+    glDepthMask(GL_TRUE);  // the clear obeys the write mask
+    glClearNamedFramebufferfv(moments_.framebuffer().id(), GL_DEPTH, 0, &farDepth);
+    glClearNamedFramebufferfv(moments_.framebuffer().id(), GL_COLOR, 0, &far_[0]);
+    return;
+  }
+  // A part of it (a scissored clear would be drawn as a quad on Mesa): the same values, the
+  // colour converted from the floats as the framebuffer clear converts them.
+  if (drawn.empty()) return;
+  const glm::ivec2 extent = drawn.max - drawn.min + 1;
+  glClearTexSubImage(moments_.depth().id(), 0, drawn.min.x, drawn.min.y, 0, extent.x, extent.y, 1, GL_DEPTH_COMPONENT,
+                     GL_FLOAT, &farDepth);
+  glClearTexSubImage(moments_.color().id(), 0, drawn.min.x, drawn.min.y, 0, extent.x, extent.y, 1, GL_RGBA, GL_FLOAT,
+                     &far_[0]);
+}
+
 void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsFormat& format,
                          const glm::vec4& params) {
   if (!encode_ || format != format_) {
@@ -71,12 +103,14 @@ void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsF
     moments_.color().setFilter(parameters_.mips ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR, GL_LINEAR);
   blur_.ensure(size, format.internalFormat, parameters_.blur > 1);
 
+  const bool blurred = parameters_.blur > 1;
+  TexelRect filtered;
   {
     auto scope = timer.scope("moments");
-    const float farDepth = 1.0f;
-    glDepthMask(GL_TRUE);  // the clear obeys the write mask
-    glClearNamedFramebufferfv(moments_.framebuffer().id(), GL_DEPTH, 0, &farDepth);
-    glClearNamedFramebufferfv(moments_.framebuffer().id(), GL_COLOR, 0, &far_[0]);
+    filtered = sampled(in);
+    const TexelRect drawn = blurred ? blur_.reads(filtered, format.internalFormat, parameters_.blur / 2, size.x) : filtered;
+    clear(drawn);
+    ScissorTo scissor(drawn);
 
     glBindFramebuffer(GL_FRAMEBUFFER, moments_.framebuffer().id());
     glViewport(0, 0, size.x, size.y);
@@ -96,7 +130,7 @@ void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsF
   // Always timed, so every configuration reports the same passes; with blur 1 and no mips
   // it is empty.
   auto scope = timer.scope("blur");
-  if (parameters_.blur > 1) blur_.run(moments_.color(), moments_.framebuffer(), blurWeights(parameters_.blur));
+  if (blurred) blur_.run(moments_.color(), moments_.framebuffer(), blurWeights(parameters_.blur), filtered);
   if (parameters_.mips) glGenerateTextureMipmap(moments_.color().id());
 }
 

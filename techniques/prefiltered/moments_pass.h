@@ -8,6 +8,10 @@
 //  "blur":    a separable Gaussian (horizontal then vertical, two draws through a ping-pong
 //             texture: separable_blur.h), then, with `mips`, the mip chain for trilinear
 //             lookups.
+// Without mips both are scissored: the blur to the texels the visibility pass can read
+// (sampled_texels.h), the moments to what that blur reads; every texel read has the value
+// it has when the whole map is drawn. With mips the chain averages the whole map, so
+// both cover it.
 // Parameters `blur` (odd kernel size, 1 = none) and `mips` are declared here once; each
 // technique reflects them after its own.
 #include <vector>
@@ -53,6 +57,11 @@ class MomentsPass {
   // bits the full-map draw stored (scripts/bit_identical.sh against the draw).
   void updateFarTexel(const MomentsFormat& format, const glm::vec4& params);
 
+  // Clears the texels the moments pass draws to the far plane's moments and depth.
+  void clear(const TexelRect& drawn);
+  // The moments texels the visibility pass can read this frame (the whole map with mips).
+  TexelRect sampled(const FrameInputs& in);
+
   Parameters parameters_{};
   MomentsFormat format_;
   RenderTarget moments_;   // the moments and the light's depth buffer
@@ -62,6 +71,8 @@ class MomentsPass {
   glm::vec4 farParams_{0.0f};
   bool farValid_ = false;
   glm::vec4 far_{0.0f};  // the texel, as the clear colour
+  std::vector<WorldBox> boxes_;  // of boxesScene_'s objects
+  const Scene* boxesScene_ = nullptr;
 };
 
 }  // namespace testbed

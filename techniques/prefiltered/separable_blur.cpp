@@ -34,7 +34,15 @@ void SeparableBlur::ensure(glm::ivec2 size, GLenum format, bool blurred) {
                    .colorLayers = l > 1 ? l : 0});
 }
 
-void SeparableBlur::run(const Texture& moments, const Framebuffer& target, const std::vector<float>& weights) {
+TexelRect SeparableBlur::reads(const TexelRect& region, GLenum format, int radius, int size) const {
+  if (region.empty()) return region;
+  const int group = pack(format) * layers(format);
+  const TexelRect rows{{region.min.x / group * group, region.min.y}, {region.max.x / group * group + group - 1, region.max.y}};
+  return rows.grown(glm::ivec2(radius), glm::ivec2(size));
+}
+
+void SeparableBlur::run(const Texture& moments, const Framebuffer& target, const std::vector<float>& weights,
+                        const TexelRect& region) {
   const int radius = static_cast<int>(weights.size()) - 1;
   const int p = pack(moments.internalFormat()), l = layers(moments.internalFormat());
   if (!rows_ || radius != radius_ || p != pack_ || l != layers_) {
@@ -56,8 +64,16 @@ void SeparableBlur::run(const Texture& moments, const Framebuffer& target, const
   }
   const glm::ivec2 size(moments.width(), moments.height());
   glBindTextureUnit(0, moments.id());
-  screen_.draw(rows_, scratch_.framebuffer(), {scratch_.color().width(), size.y});
+  {
+    // The scratch texels the column pass reads: the groups holding the region's columns,
+    // `radius` rows either side.
+    const int group = p * l;
+    const TexelRect groups{{region.min.x / group, region.min.y}, {region.max.x / group, region.max.y}};
+    ScissorTo scissor(groups.grown({0, radius}, {scratch_.color().width(), size.y}));
+    screen_.draw(rows_, scratch_.framebuffer(), {scratch_.color().width(), size.y});
+  }
   glBindTextureUnit(0, scratch_.color().id());
+  ScissorTo scissor(region);
   screen_.draw(columns_, target, size);
 }
 

@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include "techniques/prefiltered/sampled_texels.h"
 #include "testbed/gl/objects.h"
 #include "testbed/gl/render_target.h"
 #include "testbed/render/screen_pass.h"
@@ -26,8 +27,15 @@ class SeparableBlur {
   // `blurred` false; booked in the ledger current, as the moments are.
   void ensure(glm::ivec2 size, GLenum format, bool blurred);
   // Blurs `moments` (level 0, drawn into through `target`) in place with the weights by
-  // |offset| (MomentsPass::blurWeights: weights.size() − 1 is the radius, at least 1).
-  void run(const Texture& moments, const Framebuffer& target, const std::vector<float>& weights);
+  // |offset| (MomentsPass::blurWeights: weights.size() − 1 is the radius, at least 1),
+  // writing the texels of `region` (the rest of the map keeps what it held). Those texels
+  // equal a blur of the whole map where the moments hold their values over reads(region).
+  void run(const Texture& moments, const Framebuffer& target, const std::vector<float>& weights,
+           const TexelRect& region);
+  // The moments texels the blur of `region` reads, for moments of `format` on a map of
+  // side `size` and a kernel of `radius`: the row pass's outputs cover whole groups of
+  // pack() · layers() texels and the column pass's `radius` rows either side.
+  TexelRect reads(const TexelRect& region, GLenum format, int radius, int size) const;
 
  private:
   // Row outputs per fragment: channel packing (1 = none) and layers (1 = none).
