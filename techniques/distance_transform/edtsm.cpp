@@ -141,7 +141,7 @@ void EdtShadowMapping::renderFused(const FrameInputs& in, PassTimer& timer, cons
     glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
   }
   {
-    // The filter runs on the tiles where it can change a pixel, eight pixels of a line per
+    // The filter runs on the tiles where it can change a pixel, four pixels of a line per
     // invocation (edtsm_mean_filter.comp); elsewhere each direction's result is the
     // penumbra's intensity (edtsm_filter_tiles.h), copied first.
     auto scope = timer.scope("mean-filter");

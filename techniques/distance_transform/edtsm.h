@@ -12,7 +12,7 @@
 //                rows where eq. 8 can change a pixel only (edtsm_penumbra_band.h)
 //   mean-filter  the edge-aware separable mean filter (eqs. 9–10), two dispatches over the
 //                tiles where it can change a pixel (edtsm_filter_tiles.h), each invocation
-//                eight pixels of a line (edtsm_mean_filter.comp)
+//                four pixels of a line (edtsm_mean_filter.comp)
 // With `reference` set, the straightforward pipeline, same output: a full-screen pass per
 // step (`seeds`, `edt`, `penumbra`), both filter draws over the whole screen.
 // EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform

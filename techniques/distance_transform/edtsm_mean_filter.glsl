@@ -3,7 +3,7 @@
 // w_screen = w · z_screen / z_eye with z_screen = 1 / (2 tan(fov_y / 2)), a fraction of the
 // screen height), so the blur keeps its world size as the camera moves; only neighbours on
 // the same surface and facing the light take part. edtsm_mean_filter.frag filters one pixel,
-// edtsm_mean_filter.comp eight along a line; both add a pixel's taps in the same order.
+// edtsm_mean_filter.comp four along a line; both add a pixel's taps in the same order.
 // EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
 // shadow mapping", Computers & Graphics 71 (2018).
 #include "techniques/distance_transform/edtsm_screen.glsl"
