@@ -57,8 +57,8 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
     filterProgram_ = program("techniques/distance_transform/edtsm_mean_filter.frag");
     seedRows_ = Program::compute("techniques/distance_transform/edtsm_seeds.comp");
     penumbraColumns_ = Program::compute("techniques/distance_transform/edtsm_penumbra.comp");
-    filterTilesProgram_ = Program::graphics("techniques/distance_transform/edtsm_filter_tile.vert",
-                                            "techniques/distance_transform/edtsm_mean_filter.frag");
+    filterRows_ = Program::compute("techniques/distance_transform/edtsm_mean_filter.comp");
+    filterColumns_ = Program::compute("techniques/distance_transform/edtsm_mean_filter.comp", "#define COLUMNS 1\n");
   }
   allocate(in.size);
   shadowMap_.render(in, timer);
@@ -141,21 +141,21 @@ void EdtShadowMapping::renderFused(const FrameInputs& in, PassTimer& timer, cons
     glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
   }
   {
-    // The filter runs on the tiles where it can change a pixel; elsewhere each direction's
-    // result is the penumbra's intensity (edtsm_filter_tiles.h), copied first.
+    // The filter runs on the tiles where it can change a pixel, four pixels of a line per
+    // invocation (edtsm_mean_filter.comp); elsewhere each direction's result is the
+    // penumbra's intensity (edtsm_filter_tiles.h), copied first.
     auto scope = timer.scope("mean-filter");
-    bindFilter(filterTilesProgram_, in);
+    filterTiles_.findTiles(parameters_.maxFilterRadius);
     glCopyImageSubData(intensity_.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, filtered_.color().id(), GL_TEXTURE_2D, 0, 0,
                        0, 0, in.size.x, in.size.y, 1);
-    glBindTextureUnit(4, intensity_.color().id());
-    filterTilesProgram_.set("uDirection", glm::ivec2(1, 0));
-    const int radius = parameters_.maxFilterRadius;
-    filterTiles_.draw(filterTilesProgram_, filtered_.framebuffer(), in.size, glm::ivec2(radius, 0));
     glBlitNamedFramebuffer(intensity_.framebuffer().id(), out.framebuffer.id(), 0, 0, in.size.x, in.size.y, 0, 0,
                            in.size.x, in.size.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindTextureUnit(4, filtered_.color().id());
-    filterTilesProgram_.set("uDirection", glm::ivec2(0, 1));
-    filterTiles_.draw(filterTilesProgram_, out.framebuffer, in.size, glm::ivec2(radius));
+    for (const bool columns : {false, true}) {
+      const Program& program = columns ? filterColumns_ : filterRows_;
+      bindFilter(program, in);
+      glBindTextureUnit(4, (columns ? filtered_ : intensity_).color().id());
+      filterTiles_.dispatch(program, columns ? out.texture : filtered_.color(), columns ? GL_R32F : GL_RG32F, columns);
+    }
   }
 }
 

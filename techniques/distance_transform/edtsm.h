@@ -10,8 +10,9 @@
 //                transform's row pass tells the seeds, its column pass applies eq. 8 as it
 //                finds each nearest seed (edtsm_seeds.comp, edtsm_penumbra.comp), on the
 //                rows where eq. 8 can change a pixel only (edtsm_penumbra_band.h)
-//   mean-filter  the edge-aware separable mean filter (eqs. 9–10), two draws over the
-//                tiles where it can change a pixel (edtsm_filter_tiles.h)
+//   mean-filter  the edge-aware separable mean filter (eqs. 9–10), two dispatches over the
+//                tiles where it can change a pixel (edtsm_filter_tiles.h), each invocation
+//                four pixels of a line (edtsm_mean_filter.comp)
 // With `reference` set, the straightforward pipeline, same output: a full-screen pass per
 // step (`seeds`, `edt`, `penumbra`), both filter draws over the whole screen.
 // EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
@@ -66,7 +67,7 @@ class EdtShadowMapping : public WithParameters<EdtsmParameters> {
   PenumbraBand band_;
   revectorization::EdgeSplitPass rbsmPass_{"techniques/distance_transform/edtsm_rbsm.frag"};
   Program seedsProgram_, penumbraProgram_, filterProgram_;  // the reference pipeline
-  Program seedRows_, penumbraColumns_, filterTilesProgram_;
+  Program seedRows_, penumbraColumns_, filterRows_, filterColumns_;
   RenderTarget hard_, seeds_, intensity_, filtered_;
 };
 

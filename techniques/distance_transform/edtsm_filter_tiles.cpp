@@ -1,19 +1,19 @@
 #include "techniques/distance_transform/edtsm_filter_tiles.h"
 
-#include "testbed/render/screen_pass.h"
-
 namespace testbed::distance_transform {
 namespace {
 
 constexpr int kKindsUnit = 6;  // texture unit of uTileKinds, clear of the filter's own
+constexpr GLuint kArguments = 6;  // two indirect dispatches' (x, y, z) ahead of the lists
 
 }  // namespace
 
 void FilterTiles::begin(glm::ivec2 size, GLuint unit) {
-  if (!empty_) empty_ = VertexArray::create();
   const glm::ivec2 tiles = (size + kTile - 1) / kTile;
   if (tiles != tiles_) {
     kinds_ = Texture::create2D(GL_R32UI, tiles.x, tiles.y);
+    lists_ = Buffer::create((kArguments + 2 * std::size_t(tiles.x) * std::size_t(tiles.y)) * sizeof(GLuint), nullptr,
+                            GL_DYNAMIC_STORAGE_BIT);
     tiles_ = tiles;
   }
   const GLuint none = 0;
@@ -21,14 +21,35 @@ void FilterTiles::begin(glm::ivec2 size, GLuint unit) {
   glBindImageTexture(unit, kinds_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
 }
 
-void FilterTiles::draw(const Program& program, const Framebuffer& target, glm::ivec2 size, glm::ivec2 reach) const {
-  beginScreenDraw(program, target, size);
+void FilterTiles::findTiles(int radius) {
+  if (!listProgram_) listProgram_ = Program::compute("techniques/distance_transform/edtsm_filter_tiles.comp");
+  const GLuint empty[kArguments] = {0, 1, 1, 0, 1, 1};
+  glNamedBufferSubData(lists_.id(), 0, sizeof(empty), empty);
+  const int reach = (radius + kTile - 1) / kTile;
+  listProgram_.use();
   glBindTextureUnit(kKindsUnit, kinds_.id());
-  program.set("uTileKinds", kKindsUnit);
-  program.set("uTileReach", (reach + kTile - 1) / kTile);
-  program.set("uScreenSize", size);
-  glBindVertexArray(empty_.id());
-  glDrawArraysInstanced(GL_TRIANGLES, 0, 6, tiles_.x * tiles_.y);
+  listProgram_.set("uTileKinds", kKindsUnit);
+  listProgram_.set("uRowReach", glm::ivec2(reach, 0));
+  listProgram_.set("uColumnReach", glm::ivec2(reach));
+  listProgram_.set("uListLength", tiles_.x * tiles_.y);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, lists_.id());
+  glDispatchCompute(GLuint((tiles_.x * tiles_.y + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+}
+
+void FilterTiles::dispatch(const Program& program, const Texture& target, GLenum format, bool columns) const {
+  program.use();
+  program.set("uListOffset", int(kArguments) + (columns ? tiles_.x * tiles_.y : 0));
+  program.set("uTileColumns", tiles_.x);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, lists_.id());
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, lists_.id());
+  glBindImageTexture(0, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+  glDispatchComputeIndirect(GLintptr(columns ? 3 * sizeof(GLuint) : 0));
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                  GL_FRAMEBUFFER_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
 }
 
 }  // namespace testbed::distance_transform

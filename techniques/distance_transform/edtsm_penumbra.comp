@@ -15,18 +15,18 @@ layout(r32ui, binding = 1) uniform uimage2D uTileKinds;
 layout(std430, binding = 2) readonly buffer Runs { ivec4 runs[]; };
 
 uint gKinds = 0u;  // this column's kinds in the current tile
-int gRunFrom;      // the first row of the current run
 
 void featureTransformStore(ivec2 pixel, ivec2 seed) {
   const vec2 v = penumbraIntensity(pixel, seed);
   imageStore(uIntensity, pixel, vec4(v, 0.0, 0.0));
   gKinds |= intensityKind(v);
-  // The rows come last to first, so a tile's first row is the last this column visits in
-  // it; a run may start inside a tile.
-  if (pixel.y % kTile == 0 || pixel.y == gRunFrom) {
-    if (gKinds != 0u) imageAtomicOr(uTileKinds, pixel / kTile, gKinds);
-    gKinds = 0u;
-  }
+}
+
+// One atomic per column of a tile (a run may start inside a tile).
+const int kColumnSpan = kTile;
+void featureTransformSpanEnd(ivec2 pixel) {
+  if (gKinds != 0u) imageAtomicOr(uTileKinds, pixel / kTile, gKinds);
+  gKinds = 0u;
 }
 
 #include "techniques/distance_transform/feature_transform_envelope.glsl"
@@ -39,7 +39,6 @@ void main() {
   const int count = runs[base].x;
   for (int k = 0; k < count; ++k) {
     const ivec3 run = runs[base + 1 + k].xyz;  // rows [x, y), band R = z
-    gRunFrom = run.x;
     featureTransformColumnRange(run.x, run.y, max(run.x - run.z, 0), min(run.y + run.z, uSize.y), run.z);
   }
 }

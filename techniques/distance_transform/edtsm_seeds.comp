@@ -14,20 +14,27 @@ layout(r32ui, binding = 3) uniform uimage2D uTileMinDepth;  // cleared to ~0 bef
 
 // Columns x - 1, x and x + 1 of the window, each rows y - 1, y and y + 1.
 vec2 gBefore[3], gAt[3], gAfter[3];
-// This row's record of the current tile; the depth as bits (non-negative floats order as
-// their bits do).
-uint gTileKinds = 0u;                                   // per kTile
-uint gTileSeed = 0u, gTileMinDepth = 0xFFFFFFFFu;  // per kBandTile
+ivec2 gSize;         // the screen's
+bool gRowInside[3];  // whether rows y - 1, y and y + 1 lie on it
+// This row's record of the current span, one tile wide (kTile = kBandTile);
+// the depth as bits (non-negative floats order as their bits do).
+uint gTileKinds = 0u, gTileSeed = 0u, gTileMinDepth = 0xFFFFFFFFu;
 
+// fetchWithDepth() (edtsm_screen.glsl) with the bounds known per row: depth −1 off the screen.
 void fetchColumn(ivec2 pixel, out vec2 column[3]) {
-  for (int dy = -1; dy <= 1; ++dy) column[dy + 1] = fetchWithDepth(uHard, pixel + ivec2(0, dy));
+  const bool columnInside = pixel.x >= 0 && pixel.x < gSize.x;
+  for (int dy = -1; dy <= 1; ++dy)
+    column[dy + 1] = columnInside && gRowInside[dy + 1] ? texelFetch(uHard, pixel + ivec2(0, dy), 0).xy : vec2(0.0, -1.0);
+}
+
+void featureTransformRowBegin(int y) {
+  gSize = textureSize(uHard, 0);
+  for (int dy = -1; dy <= 1; ++dy) gRowInside[dy + 1] = y + dy >= 0 && y + dy < gSize.y;
+  fetchColumn(ivec2(-1, y), gAt);  // off the screen: depth −1
+  fetchColumn(ivec2(0, y), gAfter);
 }
 
 bool featureTransformIsSeed(ivec2 pixel) {
-  if (pixel.x == 0) {
-    fetchColumn(pixel - ivec2(1, 0), gAt);  // off the screen: depth −1
-    fetchColumn(pixel, gAfter);
-  }
   gBefore = gAt;
   gAt = gAfter;
   fetchColumn(pixel + ivec2(1, 0), gAfter);
@@ -39,19 +46,19 @@ bool featureTransformIsSeed(ivec2 pixel) {
   gTileKinds |= intensityKind(centre);
   if (seed) gTileSeed = 1u;
   if (!(centre.y < 0.0)) gTileMinDepth = min(gTileMinDepth, floatBitsToUint(centre.y));
-  const bool last = pixel.x == textureSize(uHard, 0).x - 1;
-  if (pixel.x % kTile == kTile - 1 || last) {
-    if (gTileKinds != 0u) imageAtomicOr(uTileKinds, pixel / kTile, gTileKinds);
-    gTileKinds = 0u;
-  }
-  if (pixel.x % kBandTile == kBandTile - 1 || last) {
-    const ivec2 tile = pixel / kBandTile;
-    if (gTileSeed != 0u) imageAtomicOr(uTileSeeds, tile, 1u);
-    if (gTileMinDepth != 0xFFFFFFFFu) imageAtomicMin(uTileMinDepth, tile, gTileMinDepth);
-    gTileSeed = 0u;
-    gTileMinDepth = 0xFFFFFFFFu;
-  }
   return seed;
+}
+
+// One atomic of each record per row of a tile.
+const int kRowSpan = kBandTile;
+void featureTransformSpanEnd(ivec2 pixel) {
+  const ivec2 tile = pixel / kBandTile;
+  if (gTileKinds != 0u) imageAtomicOr(uTileKinds, pixel / kTile, gTileKinds);
+  if (gTileSeed != 0u) imageAtomicOr(uTileSeeds, tile, 1u);
+  if (gTileMinDepth != 0xFFFFFFFFu) imageAtomicMin(uTileMinDepth, tile, gTileMinDepth);
+  gTileKinds = 0u;
+  gTileSeed = 0u;
+  gTileMinDepth = 0xFFFFFFFFu;
 }
 
 #include "techniques/distance_transform/feature_transform_row_sweep.glsl"

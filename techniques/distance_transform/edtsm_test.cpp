@@ -46,7 +46,7 @@ TEST_F(Edtsm, PassesAndMemory) {
   }
 }
 
-// The fast path (eq. 8 inside the feature transform's column pass, the mean filter drawn
+// The fast path (eq. 8 inside the feature transform's column pass, the mean filter run
 // on the tiles where it can change a pixel) against the straightforward one (`reference`:
 // a draw per step over the whole screen), bit for bit: every bundled scene, windows wider
 // than a tile, narrow ones, wide penumbrae, one wider than the nearest receivers' depth

@@ -1,7 +1,6 @@
-// What EDTSM's fused passes record per tile of the screen: the mean filter's kinds per
-// 32×32 tile (edtsm_filter_tiles.h), the penumbra band's seeds and depths per 16×16 one
-// (edtsm_penumbra_band.h), smaller since it is dilated by whole tiles.
-const int kTile = 32;      // FilterTiles::kTile
+// What EDTSM's fused passes record per 16×16 tile of the screen: the mean filter's kinds
+// (edtsm_filter_tiles.h), the penumbra band's seeds and depths (edtsm_penumbra_band.h).
+const int kTile = 16;      // FilterTiles::kTile, = kBandTile (edtsm_seeds.comp records both per span)
 const int kBandTile = 16;  // PenumbraBand::kTile, a multiple of the 8 lanes of a SIMD vector
 
 // The mean filter's kinds (edtsm_filter_tiles.h) of one (intensity, depth or −1) texel:

@@ -7,10 +7,16 @@
 // envelope needs since it is only ever evaluated at integer rows.
 //
 // The including shader defines, before including this file,
+//   const int kColumnSpan                        rows between two featureTransformSpanEnd()
 //   void featureTransformStore(ivec2 pixel, ivec2 seed)
-// given each pixel's nearest seed, (-1, -1) when the image has none, for the rows of one
-// column from the last to the first; its main() calls featureTransformColumn(), or sets
-// gColumn and calls featureTransformColumnRange() (a band of rows, below).
+//                                                given each pixel's nearest seed, (-1, -1)
+//                                                when the image has none, for the rows of
+//                                                one column from the last to the first
+//   void featureTransformSpanEnd(ivec2 pixel)    after the rows down to `pixel`, a multiple
+//                                                of kColumnSpan or the range's first row
+// (per-span work out of the per-pixel loop, as feature_transform_row_sweep.glsl's hooks);
+// its main() calls featureTransformColumn(), or sets gColumn and calls
+// featureTransformColumnRange() (a band of rows, below).
 layout(local_size_x = 64) in;
 
 uniform ivec2 uSize;
@@ -59,16 +65,22 @@ void featureTransformColumnRange(int from, int to, int rowsFrom, int rowsTo, int
       if (start < to) envelope[(++top) * uSize.x + gColumn] = ivec2(u, start);
     }
   }
-  // Walk the rows from the last to the first, popping a parabola once past its start.
-  for (int y = to - 1; y >= from; --y) {
-    ivec2 seed = ivec2(-1);
-    if (top >= 0) {
-      const ivec2 e = envelope[top * uSize.x + gColumn];
-      const int seedX = rowNearest[e.x * uSize.x + gColumn];
-      if (seedX >= 0) seed = ivec2(seedX, e.x);
-      if (y == e.y) --top;
+  // Walk the rows from the last to the first, popping a parabola once past its start, in
+  // spans that end at multiples of kColumnSpan and at `from`.
+  for (int spanEnd = to; spanEnd > from;) {
+    const int spanStart = max(from, (spanEnd - 1) / kColumnSpan * kColumnSpan);
+    for (int y = spanEnd - 1; y >= spanStart; --y) {
+      ivec2 seed = ivec2(-1);
+      if (top >= 0) {
+        const ivec2 e = envelope[top * uSize.x + gColumn];
+        const int seedX = rowNearest[e.x * uSize.x + gColumn];
+        if (seedX >= 0) seed = ivec2(seedX, e.x);
+        if (y == e.y) --top;
+      }
+      featureTransformStore(ivec2(gColumn, y), seed);
     }
-    featureTransformStore(ivec2(gColumn, y), seed);
+    featureTransformSpanEnd(ivec2(gColumn, spanStart));
+    spanEnd = spanStart;
   }
 }
 

@@ -3,9 +3,15 @@
 // sweeps: the last seed to the left, then the next seed to the right, keeping the closer.
 //
 // The including shader defines, before including this file,
-//   bool featureTransformIsSeed(ivec2 pixel)
-// asked once for each pixel of the row, from the first column to the last; its main()
-// calls featureTransformRow().
+//   const int kRowSpan                         pixels between two featureTransformSpanEnd()
+//   void featureTransformRowBegin(int y)       before row y's first featureTransformIsSeed()
+//   bool featureTransformIsSeed(ivec2 pixel)   asked once for each pixel of the row, from the
+//                                              first column to the last
+//   void featureTransformSpanEnd(ivec2 pixel)  after the pixel of each kRowSpan-th column and
+//                                              after the row's last one
+// and its main() calls featureTransformRow(). The hooks let a shader keep per-row work out
+// of the per-pixel loop: llvmpipe runs a branch's body for all 8 lanes of a vector, taken
+// or not, so work behind an `if` in the loop is paid at every pixel.
 layout(local_size_x = 64) in;
 
 uniform ivec2 uSize;
@@ -15,10 +21,15 @@ void featureTransformRow() {
   const int y = int(gl_GlobalInvocationID.x);
   if (y >= uSize.y) return;
   const int row = y * uSize.x;
+  featureTransformRowBegin(y);
   int left = -1;
-  for (int x = 0; x < uSize.x; ++x) {
-    if (featureTransformIsSeed(ivec2(x, y))) left = x;
-    rowNearest[row + x] = left;
+  for (int spanStart = 0; spanStart < uSize.x; spanStart += kRowSpan) {
+    const int spanEnd = min(spanStart + kRowSpan, uSize.x);
+    for (int x = spanStart; x < spanEnd; ++x) {
+      if (featureTransformIsSeed(ivec2(x, y))) left = x;
+      rowNearest[row + x] = left;
+    }
+    featureTransformSpanEnd(ivec2(spanEnd - 1, y));
   }
   // Right to left: `right` is the next seed at or after x; it wins only when strictly
   // closer (a tie keeps the left one, either is exact). The first sweep left each seed's
