@@ -52,6 +52,22 @@ TEST(CliSweep, BadSpecsAndShardsAreOneLineAndWriteNothing) {
   }
 }
 
+// A row naming a pass its technique lacks stops the sweep at that cell's first render
+// (techniques report their passes only by rendering), not after every cell.
+TEST(CliSweep, AMisnamedPassStopsAtTheFirstCellThatHasIt) {
+  TempDir tmp("sweep-pass");
+  json spec = json::parse(readFile(tinySpecFile()));
+  spec["scenes"]["wall"] = (fs::path(TESTBED_SOURCE_DIR) / "scenes" / "wall.json").string();
+  spec["rows"][1]["passes"] = {"visibility", "penumbra"};
+  writeFile(tmp / "bad-pass.json", spec.dump());
+  const RunResult run = runTestbed({"sweep", "--spec", (tmp / "bad-pass.json").string(), "--out", (tmp / "out").string()});
+  EXPECT_EQ(run.exitCode, 2) << run.describe();
+  EXPECT_NE(run.err.find("bad-pass.json: rows[1].passes: pcf has no pass 'penumbra'"), std::string::npos) << run.describe();
+  EXPECT_NE(run.err.find("[3/6] pcf"), std::string::npos) << run.describe();  // the first pcf cell
+  EXPECT_EQ(run.err.find("[4/6]"), std::string::npos) << run.describe();      // and nothing after it
+  EXPECT_FALSE(fs::exists(tmp / "out")) << run.describe();
+}
+
 TEST(CliSweep, WholeRunWritesRecordsTableAndFigure) {
   TempDir tmp("sweep-whole");
   const RunResult run = runTestbed({"sweep", "--spec", tinySpecFile().string(), "--out", (tmp / "out").string()});

@@ -21,6 +21,7 @@
 #include "testbed/metrics/metrics.h"
 #include "testbed/scene/primitives.h"
 #include "testbed/sweep/sweep_scene.h"
+#include "testbed/sweep/sweep_table.h"
 
 namespace testbed {
 namespace {
@@ -143,6 +144,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
       Record truthRecord = makeRecord(truth, runner, backend);
       truthRecord.error = computeErrorMetrics(truth.visibility, truth.visibility);
       std::cerr << ": " << briefSummary(truthRecord, nullptr, ", ") << "\n";
+      checkSweepPasses(spec, plan, truthCell, truthRecord);
       save(truthCell, truth, truthRecord);
       for (std::size_t i : owned[key]) {
         if (i == truthCell) continue;
@@ -152,6 +154,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
         Record record = makeRecord(run, runner, backend);
         record.error = computeErrorMetrics(run.visibility, truth.visibility);
         std::cerr << ": " << briefSummary(record, nullptr, ", ") << "\n";
+        checkSweepPasses(spec, plan, i, record);  // a misnamed pass stops here, not after every cell
         save(i, run, record);
       }
     }

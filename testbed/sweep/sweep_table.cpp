@@ -40,6 +40,20 @@ double cellValue(const Record& record, const SweepSpec& spec, std::size_t row) {
   return spec.measure->value(part, nullptr).value_or(NAN);
 }
 
+}  // namespace
+
+void checkSweepPasses(const SweepSpec& spec, const SweepPlan& plan, std::size_t cell, const Record& record) {
+  for (std::size_t row = 0; row < spec.rows.size(); ++row) {
+    if (!spec.rows[row].passes) continue;
+    bool reads = false;
+    for (const auto& entry : plan.entries[row]) reads = reads || std::find(entry.begin(), entry.end(), cell) != entry.end();
+    if (!reads) continue;
+    for (const auto& pass : *spec.rows[row].passes) passMs(record, pass, spec, row);
+  }
+}
+
+namespace {
+
 // Cost of `value` relative to `baseline` (> 1: dearer than sm), whatever the measure.
 std::optional<double> costRatio(std::optional<double> value, std::optional<double> baseline, const Metric& measure) {
   if (!value || !baseline || *value <= 0 || *baseline <= 0) return std::nullopt;

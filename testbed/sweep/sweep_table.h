@@ -36,6 +36,12 @@ using SweepHeader = std::vector<std::pair<std::string, std::string>>;
 SweepTable buildSweepTable(const SweepSpec& spec, const SweepPlan& plan,
                            const std::map<std::size_t, Record>& records);
 
+// The same check for one record as soon as it is made, so that a spec naming a pass its
+// technique does not have stops at that cell's first render, not after the whole sweep:
+// throws InputError naming the row when a row whose entries read `cell` names a pass
+// `record` lacks. A technique reports its passes only by rendering.
+void checkSweepPasses(const SweepSpec& spec, const SweepPlan& plan, std::size_t cell, const Record& record);
+
 std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& header);
 // The same data for scripts/sweep_plot.py.
 nlohmann::json sweepTableJson(const SweepTable& table, const SweepHeader& header);
