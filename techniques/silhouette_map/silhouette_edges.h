@@ -18,4 +18,8 @@ namespace testbed {
 // Returns the number of edges appended.
 std::size_t appendSilhouetteEdges(const MeshTopology& mesh, const LightTransforms& light, std::vector<glm::vec4>& out);
 
+// The edges' quads are drawn indexed, this many edges a draw, from one index buffer of
+// 6 16-bit indices per edge (silhouette_map.cpp): a fixed size, whatever the silhouette.
+inline constexpr std::size_t kQuadChunkEdges = 1024;
+
 }  // namespace testbed

@@ -4,6 +4,7 @@
 // and the final screen pass, drawn edge-split ("visibility" for every pixel, then
 // "silhouette-pixels" where the corner tests disagree).
 // Chan's notes: Eric Chan (MIT), "Shadow Silhouette Maps", course notes on Sen et al.'s maps.
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -59,7 +60,7 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
     if (!edgeProgram_) {
       edgeProgram_ = Program::graphics("techniques/silhouette_map/silhouette_map_edges.vert",
                                        "techniques/silhouette_map/silhouette_map_points.frag");
-      emptyVertexArray_ = VertexArray::create();
+      quadVertexArray_ = VertexArray::create();
     }
     const int side = in.shadowMapSize + 1;  // one more than the depth map: see silhouette_map.glsl
     // 16-bit unorm offsets in the texel: 1/65535 of a texel, the notes ask for ≥ fp16.
@@ -94,15 +95,37 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
     edgeProgram_.set("uOcclusionBias", parameters_.occlusionBias);
     bindShadowMap(edgeProgram_, shadowMap_.depth());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, edgeBuffer_.id());
-    glBindVertexArray(emptyVertexArray_.id());
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(6 * edges));
+    drawQuads(edges);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  }
+
+  // Two triangles per edge over its quad's four corners (vertices 4e … 4e + 3), indexed so
+  // the vertex stage shades each corner once (llvmpipe's vertex cache) rather than six
+  // vertices per edge, each projecting both endpoints; the triangles are the same. One
+  // fixed index buffer of kQuadChunkEdges edges serves every chunk through its base vertex
+  // (gl_VertexID counts it), so its 12 KiB do not grow with the silhouette.
+  void drawQuads(std::size_t edges) {
+    if (!quadIndices_) {
+      std::vector<GLushort> indices;
+      indices.reserve(6 * kQuadChunkEdges);
+      for (std::size_t e = 0; e < kQuadChunkEdges; ++e)
+        for (const std::size_t corner : {0, 1, 2, 0, 2, 3}) indices.push_back(static_cast<GLushort>(4 * e + corner));
+      quadIndices_ = Buffer::create(indices.size() * sizeof(GLushort), indices.data());
+      glVertexArrayElementBuffer(quadVertexArray_.id(), quadIndices_.id());
+    }
+    glBindVertexArray(quadVertexArray_.id());
+    for (std::size_t first = 0; first < edges; first += kQuadChunkEdges) {
+      const std::size_t count = std::min(kQuadChunkEdges, edges - first);
+      glDrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(6 * count), GL_UNSIGNED_SHORT, nullptr,
+                               static_cast<GLint>(4 * first));
+    }
   }
 
   ShadowMapPass shadowMap_;
   revectorization::EdgeSplitPass visibility_{"techniques/silhouette_map/silhouette_map_visibility.frag"};
   Program edgeProgram_;
-  VertexArray emptyVertexArray_;
+  VertexArray quadVertexArray_;  // no attributes (vertex pulling), the quad indices
+  Buffer quadIndices_;           // drawQuads'
   RenderTarget silhouettes_;  // the (N + 1)² silhouette map, RG16
   Buffer edgeBuffer_;
   std::vector<glm::vec4> endpoints_;

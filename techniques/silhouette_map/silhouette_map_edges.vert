@@ -1,7 +1,7 @@
 #version 450 core
 // Conservative rasterization of the silhouette edges into the silhouette map (viewport
-// (N + 1)², silhouette space, see silhouette_map.glsl) by vertex pulling: 6 vertices per
-// edge make a quad around the projected segment, widened and lengthened by kMargin texels
+// (N + 1)², silhouette space, see silhouette_map.glsl) by vertex pulling: the 4 corners of
+// each edge's quad (indexed as two triangles) around the projected segment, widened and lengthened by kMargin texels
 // on every side. Any texel the segment touches has its centre within √2/2 of the
 // segment, so within √2/2 of it along and across, and it is rasterized (the paper's "thin
 // quads"; the fragment shader drops the extras). Only touched texels get a point
@@ -21,15 +21,14 @@ vec3 silhouetteSpace(vec4 clip) {
 }
 
 void main() {
-  int edge = gl_VertexID / 6;
-  const int kCorners[6] = int[6](0, 1, 2, 0, 2, 3);  // two triangles of the quad
-  int corner = kCorners[gl_VertexID % 6];
+  int edge = gl_VertexID / 4;
+  int corner = gl_VertexID % 4;
   vec4 a = uLightViewProjection * vec4(endpoints[2 * edge].xyz, 1.0);
   vec4 b = uLightViewProjection * vec4(endpoints[2 * edge + 1].xyz, 1.0);
   // Clip to the near plane (z ≥ −w) so edges reaching behind a spot light project sanely.
   float da = a.z + a.w, db = b.z + b.w;
   if (da < 0.0 && db < 0.0) {
-    gl_Position = vec4(-2.0, -2.0, 0.0, 1.0);  // all six alike: no area, no fragment
+    gl_Position = vec4(-2.0, -2.0, 0.0, 1.0);  // all four alike: no area, no fragment
     vA = vB = vec3(-1.0);
     return;
   }

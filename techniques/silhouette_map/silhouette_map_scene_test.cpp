@@ -105,7 +105,8 @@ TEST(SilhouetteMapScene, PassesAndMemory) {
   for (const auto& object : scene.objects)
     edges += appendSilhouetteEdges(meshTopology(object.mesh), lightTransforms(scene.light), endpoints);
   EXPECT_EQ(edges, 6u + 4u);  // the box's hexagon and the floor's border
-  EXPECT_EQ(run.memoryBytes, 256u * 256u * 2u + 257u * 257u * 4u + edges * 2u * 16u + 320u * 180u * 2u);
+  EXPECT_EQ(run.memoryBytes, 256u * 256u * 2u + 257u * 257u * 4u + edges * 2u * 16u + 320u * 180u * 2u +
+                                kQuadChunkEdges * 6u * 2u);
 }
 
 // The bundled scenes at 256² and 512². Boundary error and edge mismatch are lower than
