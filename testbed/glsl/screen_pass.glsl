@@ -41,17 +41,17 @@ void main() {
     screenFacingAway(r);
     return;
   }
-  if (!insideLightFrustum(light)) {
-    screenWrite(r, 0.0);
-    return;
-  }
+  // One screenWrite for both answers below: llvmpipe runs every branch for all lanes, so
+  // a write per branch costs its output's work (EDTSM's camera depth) twice.
+  float v = 0.0;
+  if (insideLightFrustum(light)) {
 #ifdef SCREEN_PASS_CLASSIFY
-  float v;
-  if (screenClassify(pixel, r, light, v))
-    screenWrite(r, v);
-  else
-    gl_FragDepth = 0.0;  // the second draw computes it
+    // Where the cheap answer is not the technique's, the mark sends the pixel to the
+    // second draw, which overwrites what this one writes.
+    if (!screenClassify(pixel, r, light, v)) gl_FragDepth = 0.0;
 #else
-  screenWrite(r, screenVisibility(pixel, r, light));
+    v = screenVisibility(pixel, r, light);
 #endif
+  }
+  screenWrite(r, v);
 }
