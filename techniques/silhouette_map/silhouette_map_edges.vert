@@ -1,10 +1,10 @@
 #version 450 core
 // Conservative rasterization of the silhouette edges into the silhouette map (viewport
 // (N + 1)², silhouette space, see silhouette_map.glsl) by vertex pulling: the 4 corners of
-// each edge's quad (indexed as two triangles) around the projected segment, widened and lengthened by kMargin texels
-// on every side. Any texel the segment touches has its centre within √2/2 of the
-// segment, so within √2/2 of it along and across, and it is rasterized (the paper's "thin
-// quads"; the fragment shader drops the extras). Only touched texels get a point
+// each edge's quad (drawn indexed as two triangles) around the projected segment, widened
+// and lengthened by kMargin texels on every side. Any texel the segment touches has its
+// centre within √2/2 of the segment, so within √2/2 of it along and across, and it is
+// rasterized (the paper's "thin quads"; the fragment shader drops the extras). Only touched texels get a point
 // (silhouettePoint), so any margin over √2/2 writes the same map: 0.75 keeps the texel
 // centres 0.04 texels clear of the quad's edges, where the rasterizer's rule could drop
 // them, and shades a quarter (long edges) to a third (short ones) fewer fragments than a
