@@ -8,6 +8,8 @@ namespace testbed {
 namespace {
 
 constexpr int kGroupSize = 64;  // local_size_x of both shaders
+// feature_transform_units.glsl's.
+constexpr GLuint kRowNearestUnit = 6, kEnvelopeUnit = 7;
 
 GLuint groupsFor(int invocations) { return GLuint((invocations + kGroupSize - 1) / kGroupSize); }
 
@@ -50,9 +52,8 @@ void FeatureTransformPass::prepare(glm::ivec2 size) {
   if (size != size_) {
     // Allocated here, not at construction, so they are booked in the ledger current while
     // the technique renders.
-    const std::size_t pixels = std::size_t(size.x) * std::size_t(size.y);
-    rowNearest_ = Buffer::create(pixels * sizeof(GLint), nullptr);
-    envelope_ = Buffer::create(pixels * 2 * sizeof(GLint), nullptr);
+    rowNearest_ = Texture::create2D(GL_R32I, size.x, size.y);
+    envelope_ = Texture::create2D(GL_RG32I, size.x, size.y);
     size_ = size;
   }
 }
@@ -60,23 +61,23 @@ void FeatureTransformPass::prepare(glm::ivec2 size) {
 void FeatureTransformPass::rows(const Program& rowsProgram) {
   rowsProgram.use();
   rowsProgram.set("uSize", size_);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, rowNearest_.id());
+  glBindImageTexture(kRowNearestUnit, rowNearest_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32I);
   glDispatchCompute(groupsFor(size_.y), 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 
 void FeatureTransformPass::columns(const Program& columnsProgram) {
   columnsProgram.use();
   columnsProgram.set("uSize", size_);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, rowNearest_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, envelope_.id());
+  glBindImageTexture(kRowNearestUnit, rowNearest_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32I);
+  glBindImageTexture(kEnvelopeUnit, envelope_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32I);
   glDispatchCompute(groupsFor(size_.x), 1, 1);
   // Whatever reads the result next: a texel fetch, an image load, a copy, a blit or a
   // read-back.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                   GL_FRAMEBUFFER_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
+  glBindImageTexture(kRowNearestUnit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32I);
+  glBindImageTexture(kEnvelopeUnit, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32I);
 }
 
 std::vector<glm::ivec2> FeatureTransformPass::readNearest() const {

@@ -53,8 +53,11 @@ class FeatureTransformPass {
   Program rowsProgram_, columnsProgram_;
   glm::ivec2 size_{0};
   Texture nearest_;
-  Buffer rowNearest_;  // int per pixel: nearest seed column in the same row, -1 if none
-  Buffer envelope_;    // ivec2 per pixel: pass 2's parabola stack (row, first row it wins)
+  // Images rather than shader storage buffers: on llvmpipe an image store costs about half
+  // the instructions of a buffer store, and these two take one or more per pixel. Bound at
+  // the units of feature_transform_units.glsl.
+  Texture rowNearest_;  // R32I, a texel per pixel: nearest seed column in the same row, -1 if none
+  Texture envelope_;    // RG32I, a texel per pixel: pass 2's parabola stacks (row, first row it wins)
 };
 
 }  // namespace testbed

@@ -17,18 +17,22 @@
 // (per-span work out of the per-pixel loop, as feature_transform_row_sweep.glsl's hooks);
 // its main() calls featureTransformColumn(), or sets gColumn and calls
 // featureTransformColumnRange() (a band of rows, below).
+#include "techniques/distance_transform/feature_transform_units.glsl"
+
 layout(local_size_x = 64) in;
 
 uniform ivec2 uSize;
-layout(std430, binding = 0) readonly buffer RowNearest { int rowNearest[]; };
-// Per column, a stack of (row i of a parabola, first row where it is the minimum); entry k
-// of column x at k * width + x, so neighbouring invocations touch neighbouring memory.
-layout(std430, binding = 1) buffer Envelope { ivec2 envelope[]; };
-
 int gColumn;  // this invocation's column
+layout(r32i, binding = kRowNearestUnit) uniform readonly iimage2D uRowNearest;
+// Per column, a stack of (row i of a parabola, first row where it is the minimum); entry k
+// of column x at texel (x, k). Images, not buffers, as in pass 1.
+layout(rg32i, binding = kEnvelopeUnit) uniform iimage2D uEnvelope;
+
+ivec2 envelopeAt(int k) { return imageLoad(uEnvelope, ivec2(gColumn, k)).xy; }
+void setEnvelope(int k, ivec2 e) { imageStore(uEnvelope, ivec2(gColumn, k), ivec4(e, 0, 0)); }
 
 int g(int i) {
-  const int seedX = rowNearest[i * uSize.x + gColumn];
+  const int seedX = imageLoad(uRowNearest, ivec2(gColumn, i)).x;
   return seedX < 0 ? uSize.x + uSize.y : abs(gColumn - seedX);
 }
 int f(int y, int i, int gi) { return (y - i) * (y - i) + gi * gi; }
@@ -48,21 +52,21 @@ void featureTransformColumnRange(int from, int to, int rowsFrom, int rowsTo, int
     if (gu > maxG) continue;
     // Pop parabolas that u beats (strictly) where they start to win.
     while (top >= 0) {
-      const ivec2 e = envelope[top * uSize.x + gColumn];
+      const ivec2 e = envelopeAt(top);
       if (f(e.y, e.x, g(e.x)) <= f(e.y, u, gu)) break;
       --top;
     }
     if (top < 0) {
       top = 0;
-      envelope[gColumn] = ivec2(u, from);
+      setEnvelope(0, ivec2(u, from));
     } else {
       // u wins strictly from floor(sep) + 1 on, sep = ((u² - i²) + (g(u)² - g(i)²)) / 2(u - i);
       // the top still wins (or ties) at its own start >= from >= 0, so the numerator is >= 0
       // and integer division floors.
-      const int i = envelope[top * uSize.x + gColumn].x;
+      const int i = envelopeAt(top).x;
       const int gi = g(i);
       const int start = 1 + ((u * u - i * i) + (gu * gu - gi * gi)) / (2 * (u - i));
-      if (start < to) envelope[(++top) * uSize.x + gColumn] = ivec2(u, start);
+      if (start < to) setEnvelope(++top, ivec2(u, start));
     }
   }
   // Walk the rows from the last to the first, popping a parabola once past its start, in
@@ -72,8 +76,8 @@ void featureTransformColumnRange(int from, int to, int rowsFrom, int rowsTo, int
     for (int y = spanEnd - 1; y >= spanStart; --y) {
       ivec2 seed = ivec2(-1);
       if (top >= 0) {
-        const ivec2 e = envelope[top * uSize.x + gColumn];
-        const int seedX = rowNearest[e.x * uSize.x + gColumn];
+        const ivec2 e = envelopeAt(top);
+        const int seedX = imageLoad(uRowNearest, ivec2(gColumn, e.x)).x;
         if (seedX >= 0) seed = ivec2(seedX, e.x);
         if (y == e.y) --top;
       }

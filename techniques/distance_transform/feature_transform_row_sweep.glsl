@@ -12,22 +12,25 @@
 // and its main() calls featureTransformRow(). The hooks let a shader keep per-row work out
 // of the per-pixel loop: llvmpipe runs a branch's body for all 8 lanes of a vector, taken
 // or not, so work behind an `if` in the loop is paid at every pixel.
+#include "techniques/distance_transform/feature_transform_units.glsl"
+
 layout(local_size_x = 64) in;
 
 uniform ivec2 uSize;
-layout(std430, binding = 0) buffer RowNearest { int rowNearest[]; };
+// An image, not a buffer: llvmpipe stores to an image for about half the instructions of
+// a store to a buffer (feature_transform.h).
+layout(r32i, binding = kRowNearestUnit) uniform iimage2D uRowNearest;
 
 void featureTransformRow() {
   const int y = int(gl_GlobalInvocationID.x);
   if (y >= uSize.y) return;
-  const int row = y * uSize.x;
   featureTransformRowBegin(y);
   int left = -1;
   for (int spanStart = 0; spanStart < uSize.x; spanStart += kRowSpan) {
     const int spanEnd = min(spanStart + kRowSpan, uSize.x);
     for (int x = spanStart; x < spanEnd; ++x) {
       if (featureTransformIsSeed(ivec2(x, y))) left = x;
-      rowNearest[row + x] = left;
+      imageStore(uRowNearest, ivec2(x, y), ivec4(left));
     }
     featureTransformSpanEnd(ivec2(spanEnd - 1, y));
   }
@@ -36,9 +39,9 @@ void featureTransformRow() {
   // own column at the seed, so the seeds need not be asked again.
   int right = -1;
   for (int x = uSize.x - 1; x >= 0; --x) {
-    const int l = rowNearest[row + x];
+    const int l = imageLoad(uRowNearest, ivec2(x, y)).x;
     if (l == x) right = x;
     if (right < 0) continue;
-    if (l < 0 || right - x < x - l) rowNearest[row + x] = right;
+    if (l < 0 || right - x < x - l) imageStore(uRowNearest, ivec2(x, y), ivec4(right));
   }
 }
