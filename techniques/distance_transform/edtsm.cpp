@@ -132,6 +132,7 @@ void EdtShadowMapping::renderFused(const FrameInputs& in, PassTimer& timer, cons
     penumbraColumns_.set("uHard", 4);
     penumbraColumns_.set("uPenumbra", parameters_.penumbra);
     glBindImageTexture(0, intensity_.color().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+    glBindImageTexture(4, hard_.color().id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
     filterTiles_.begin(in.size, 1);
     band_.begin(in.size);
     featureTransform_.run(in.size, seedRows_, penumbraColumns_,
@@ -139,6 +140,7 @@ void EdtShadowMapping::renderFused(const FrameInputs& in, PassTimer& timer, cons
     band_.end();
     glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
     glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    glBindImageTexture(4, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
   }
   {
     // The filter runs on the tiles where it can change a pixel, four pixels of a line per
@@ -154,8 +156,10 @@ void EdtShadowMapping::renderFused(const FrameInputs& in, PassTimer& timer, cons
       const Program& program = columns ? filterColumns_ : filterRows_;
       bindFilter(program, in);
       glBindTextureUnit(4, (columns ? filtered_ : intensity_).color().id());
+      glBindImageTexture(4, (columns ? filtered_ : intensity_).color().id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
       filterTiles_.dispatch(program, columns ? out.texture : filtered_.color(), columns ? GL_R32F : GL_RG32F, columns);
     }
+    glBindImageTexture(4, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
   }
 }
 

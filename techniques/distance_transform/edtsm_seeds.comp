@@ -11,6 +11,9 @@
 layout(r32ui, binding = 1) uniform uimage2D uTileKinds;     // cleared to 0 before
 layout(r32ui, binding = 2) uniform uimage2D uTileSeeds;     // cleared to 0 before
 layout(r32ui, binding = 3) uniform uimage2D uTileMinDepth;  // cleared to ~0 before
+// uHard again, as an image: on llvmpipe an imageLoad costs fewer instructions than a
+// texelFetch of the same texel, and this pass makes three a pixel.
+layout(rg32f, binding = 4) uniform readonly image2D uHardImage;
 
 // Columns x - 1, x and x + 1 of the window, each rows y - 1, y and y + 1.
 vec2 gBefore[3], gAt[3], gAfter[3];
@@ -24,7 +27,7 @@ uint gTileKinds = 0u, gTileSeed = 0u, gTileMinDepth = 0xFFFFFFFFu;
 void fetchColumn(ivec2 pixel, out vec2 column[3]) {
   const bool columnInside = pixel.x >= 0 && pixel.x < gSize.x;
   for (int dy = -1; dy <= 1; ++dy)
-    column[dy + 1] = columnInside && gRowInside[dy + 1] ? texelFetch(uHard, pixel + ivec2(0, dy), 0).xy : vec2(0.0, -1.0);
+    column[dy + 1] = columnInside && gRowInside[dy + 1] ? imageLoad(uHardImage, pixel + ivec2(0, dy)).xy : vec2(0.0, -1.0);
 }
 
 void featureTransformRowBegin(int y) {
