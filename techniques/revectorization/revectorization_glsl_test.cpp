@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "techniques/revectorization/depth_image.h"
 #include "techniques/revectorization/rpcf_tiles.h"
 #include "testbed/gl/objects.h"
 #include "testbed/gl/pass_timer.h"
@@ -49,6 +50,7 @@ class Probe {
   explicit Probe(int size = kSize) : size_(size) {
     test::sharedContext();
     tiles_.emplace();
+    depthImage_.emplace();
     program_ = Program::compute("techniques/revectorization/probe.comp");
     map_ = Texture::create2D(GL_R32F, size, size);
     map_.setFilter(GL_NEAREST, GL_NEAREST);
@@ -76,6 +78,7 @@ class Probe {
       timer.resolve();
       tiles_->bind(program_);
     }
+    depthImage_->update(map_);  // what rvStoredDepth reads
     program_.use();
     glBindTextureUnit(2, map_.id());
     program_.set("uShadowMap", 2);
@@ -103,6 +106,7 @@ class Probe {
   Program program_;
   Texture map_;
   std::optional<revectorization::RpcfTiles> tiles_;  // made once the context is current
+  std::optional<revectorization::DepthImage> depthImage_;
 };
 
 Probe& probe() {

@@ -34,6 +34,7 @@ void reflectKernel(ParameterBinder& b, int& kernel) {
 
 void Common::bindLibrary(const Program& program, const Texture& shadowMap) const {
   bindShadowMap(program, shadowMap);
+  depthImage_.bind();
   setLibraryUniforms(program);
 }
 
@@ -90,6 +91,11 @@ void SinglePassBase::configureCommon(const CommonParameters& parameters) {
 void SinglePassBase::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
   shadowMap_.render(in, timer);
   renderInputs(shadowMap_.depth(), timer);
+  {
+    // Part of the classification's input (depth_image.h), timed with it.
+    auto scope = timer.scope("classify");
+    common_.updateDepthImage(shadowMap_.depth());
+  }
   const auto bind = [&](const Program& program) {
     bindReceiverInputs(program, in);
     common_.bindLibrary(program, shadowMap_.depth());

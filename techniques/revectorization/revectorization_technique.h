@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "techniques/revectorization/depth_image.h"
 #include "techniques/revectorization/edge_split_pass.h"
 #include "testbed/render/screen_pass.h"
 #include "testbed/render/shadow_map_pass.h"
@@ -38,9 +39,13 @@ void reflectKernel(ParameterBinder& b, int& kernel);
 class Common {
  public:
   void configure(const CommonParameters& parameters) { parameters_ = parameters; }
-  // Uniforms of revectorization.glsl; bindLibrary also binds the shadow map.
+  // Uniforms of revectorization.glsl; bindLibrary also binds the shadow map and its depth
+  // image (depth_image.h), which updateDepthImage() must have copied this frame.
   void setLibraryUniforms(const Program& program) const;
   void bindLibrary(const Program& program, const Texture& shadowMap) const;
+  // Copies the frame's shadow map into the depth image; callers time it inside their first
+  // pass after the shadow map, as part of the technique.
+  void updateDepthImage(const Texture& shadowMap) { depthImage_.update(shadowMap); }
   // When a debug view was asked for, draws the light-space one (debug.frag) outside any
   // timed scope and reads it back. `bothSides` false shows entering discontinuities only.
   void renderDebug(const FrameInputs& in, const Texture& shadowMap, bool bothSides);
@@ -53,6 +58,7 @@ class Common {
 
  private:
   CommonParameters parameters_{};
+  DepthImage depthImage_;
   Program debugProgram_;
   RenderTarget debugTarget_;  // RGBA8
   ScreenPass screen_;

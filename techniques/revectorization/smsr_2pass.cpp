@@ -34,6 +34,7 @@ class SmsrTwoPass final : public WithParameters<CommonParameters> {
       auto scope = timer.scope("discontinuity");
       const float clear[4] = {0, 0, 0, 0};  // a = 0: no receiver
       glClearNamedFramebufferfv(disc_.framebuffer().id(), GL_COLOR, 0, clear);
+      common_.updateDepthImage(shadowMap_.depth());  // depth_image.h: timed with pass 1
       bindReceiverInputs(discProgram_, in);
       common_.bindLibrary(discProgram_, shadowMap_.depth());
       drawSceneAgain(in);
