@@ -3,9 +3,14 @@
 namespace testbed::revectorization {
 
 void DepthImage::update(const Texture& shadowMap) {
-  if (!copy_) copy_ = Program::graphics("testbed/render/fullscreen.vert", "techniques/revectorization/depth_image.frag");
-  const glm::ivec2 size((shadowMap.width() + 1) / 2, (shadowMap.height() + 1) / 2);
-  image_.ensure({.size = size, .color = GL_RGBA32F});
+  if (!copy_ || copyLayout_ != layout_) {
+    copy_ = Program::graphics("testbed/render/fullscreen.vert", "techniques/revectorization/depth_image.frag", defines());
+    copyLayout_ = layout_;
+  }
+  const bool texels = layout_ == Layout::Texels;
+  const glm::ivec2 size = texels ? glm::ivec2(shadowMap.width(), shadowMap.height())
+                                 : glm::ivec2((shadowMap.width() + 1) / 2, (shadowMap.height() + 1) / 2);
+  image_.ensure({.size = size, .color = GLenum(texels ? GL_R32F : GL_RGBA32F)});
   glBindTextureUnit(0, shadowMap.id());
   copy_.use();
   copy_.set("uShadowMap", 0);
@@ -16,7 +21,8 @@ void DepthImage::update(const Texture& shadowMap) {
 }
 
 void DepthImage::bind() const {
-  glBindImageTexture(kUnit, image_.color().id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+  glBindImageTexture(kUnit, image_.color().id(), 0, GL_FALSE, 0, GL_READ_ONLY,
+                     layout_ == Layout::Texels ? GL_R32F : GL_RGBA32F);
 }
 
 }  // namespace testbed::revectorization

@@ -1,13 +1,18 @@
 #pragma once
-// The shadow map's stored depths copied, texel for texel, into an RGBA32F image of its
-// 2×2 texel blocks (half its size), which revectorization.glsl's single-texel reads (the
-// walks of computeRD above all) load with imageLoad. Why a copy: on llvmpipe an imageLoad
-// costs far fewer instructions than a texelFetch of a depth texture (the walks' edge pass
-// of rpcf-smsr on fence: 195 → 122 M), and the copy is one gather and one fragment write
-// per block. Why exact: a gather of the depth texture returns the very floats texelFetch
-// returns, so every test reads the value it read before. The classification's own
-// gathers keep reading the depth texture. The copy belongs to the technique's cost:
-// callers time it inside their first pass after the shadow map.
+// The shadow map's stored depths copied into an image that revectorization.glsl's
+// single-texel reads (the walks of computeRD above all) load with imageLoad. Why a copy:
+// on llvmpipe an imageLoad costs far fewer instructions than a texelFetch of a depth
+// texture (the edge pass of rpcf-smsr on fence: 195 → 122 M). Why exact: texelFetch and
+// textureGather of the depth texture return the very floats the copy stores, so every
+// test reads the value it read before. The classification's own gathers keep reading the
+// depth texture. The copy belongs to the technique's cost: callers time it inside their
+// first pass after the shadow map. Two layouts, for two balances of copy against reads:
+// - Blocks (the default): RGBA32F at half the map's size, a texel per 2×2 block, drawn
+//   with one gather a block (3.6 M instructions at 512²), a read picking its component;
+// - Texels: R32F at the map's size, a fragment per texel (10 M at 512²), a read one load.
+//   RPCF's k×k walks read so much that the cheaper reads pay for the dearer copy.
+#include <string>
+
 #include "testbed/gl/objects.h"
 #include "testbed/gl/render_target.h"
 #include "testbed/render/screen_pass.h"
@@ -16,6 +21,8 @@ namespace testbed::revectorization {
 
 class DepthImage {
  public:
+  enum class Layout { Blocks, Texels };
+
   // revectorization.glsl's uShadowImage; clear of the image units the family's and
   // EDTSM's shaders use otherwise.
   static constexpr GLuint kUnit = 5;
@@ -25,10 +32,15 @@ class DepthImage {
   void update(const Texture& shadowMap);
   // Binds the image at kUnit for reading.
   void bind() const;
+  // The layout, and the defines revectorization.glsl (and depth_image.frag) read it from.
+  void setLayout(Layout layout) { layout_ = layout; }
+  std::string defines() const { return layout_ == Layout::Texels ? "#define RV_DEPTH_TEXELS 1\n" : ""; }
 
  private:
+  Layout layout_ = Layout::Blocks;
   Program copy_;
-  RenderTarget image_;  // RGBA32F colour, a texel per 2×2 block: drawn into, read as an image
+  Layout copyLayout_ = Layout::Blocks;  // copy_'s
+  RenderTarget image_;  // drawn into, read as an image
   ScreenPass screen_;
 };
 

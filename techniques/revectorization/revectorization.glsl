@@ -33,18 +33,21 @@ bool rvInsideMap(ivec2 t) {
   return all(greaterThanEqual(t, ivec2(0))) && all(lessThan(t, uShadowMapSize));
 }
 
-// The shadow map's depths as an image of its 2×2 texel blocks (depth_image.h: the same
-// floats, cheaper to read one at a time on llvmpipe), at DepthImage::kUnit.
-layout(rgba32f, binding = 5) uniform readonly image2D uShadowImage;
-
-// The stored depth of texel t (inside the map): the very texel, and so the very value, that
-// shadowTestTexel's nearest lookup at the texel centre reads, without its coordinate
-// arithmetic.
+// The shadow map's depths as an image (depth_image.h: the same floats, cheaper to read one
+// at a time on llvmpipe), at DepthImage::kUnit, in either of its layouts.
+// rvStoredDepth(t): the stored depth of texel t (inside the map), the very value that
+// shadowTestTexel's nearest lookup at the texel centre reads.
+#ifdef RV_DEPTH_TEXELS
+layout(r32f, binding = 5) uniform readonly image2D uShadowImage;
+float rvStoredDepth(ivec2 t) { return imageLoad(uShadowImage, t).r; }
+#else
+layout(rgba32f, binding = 5) uniform readonly image2D uShadowImage;  // 2×2 blocks
 float rvStoredDepth(ivec2 t) {
   const vec4 block = imageLoad(uShadowImage, t >> 1);
   const vec2 row = (t.y & 1) != 0 ? block.zw : block.xy;
   return (t.x & 1) != 0 ? row.y : row.x;
 }
+#endif
 
 // The shadow test of glsl/shadow_test.glsl against an already fetched stored depth.
 float rvTest(float z, float stored) { return z - uBias <= stored ? 1.0 : 0.0; }

@@ -46,8 +46,10 @@ void Common::setLibraryUniforms(const Program& program) const {
 
 void Common::renderDebug(const FrameInputs& in, const Texture& shadowMap, bool bothSides) {
   if (debugView() == DebugView::None) return;
-  if (!debugProgram_)
-    debugProgram_ = Program::graphics("testbed/render/fullscreen.vert", "techniques/revectorization/debug.frag");
+  if (!debugProgram_ || debugDefines_ != libraryDefines()) {
+    debugDefines_ = libraryDefines();
+    debugProgram_ = Program::graphics("testbed/render/fullscreen.vert", "techniques/revectorization/debug.frag", debugDefines_);
+  }
   bindReceiverInputs(debugProgram_, in);
   bindLibrary(debugProgram_, shadowMap);
   debugProgram_.set("uDebugView", debugView() == DebugView::Discontinuity ? 1 : 2);
@@ -86,6 +88,7 @@ std::vector<std::pair<std::string, ImageF>> Common::debugImages() const {
 void SinglePassBase::configureCommon(const CommonParameters& parameters) {
   shadowMap_.configure(parameters.shadowMap);
   common_.configure(parameters);
+  common_.setDepthLayout(depthLayout());
 }
 
 void SinglePassBase::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
@@ -102,7 +105,7 @@ void SinglePassBase::render(const FrameInputs& in, PassTimer& timer, const Visib
     setTechniqueUniforms(program);
     bindInputs(program);
   };
-  screen_.setDefines(shaderDefines());
+  screen_.setDefines(shaderDefines() + common_.libraryDefines());
   screen_.draw(in, out, timer, bind, "classify", "revectorize");
   // Untimed: the debug view never changes the timed passes.
   common_.renderDebug(in, shadowMap_.depth(), bothSides_);

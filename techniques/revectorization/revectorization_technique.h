@@ -46,6 +46,10 @@ class Common {
   // Copies the frame's shadow map into the depth image; callers time it inside their first
   // pass after the shadow map, as part of the technique.
   void updateDepthImage(const Texture& shadowMap) { depthImage_.update(shadowMap); }
+  // The depth image's layout (Blocks unless set), and the defines every program that
+  // includes revectorization.glsl must be compiled with.
+  void setDepthLayout(DepthImage::Layout layout) { depthImage_.setLayout(layout); }
+  std::string libraryDefines() const { return depthImage_.defines(); }
   // When a debug view was asked for, draws the light-space one (debug.frag) outside any
   // timed scope and reads it back. `bothSides` false shows entering discontinuities only.
   void renderDebug(const FrameInputs& in, const Texture& shadowMap, bool bothSides);
@@ -60,6 +64,7 @@ class Common {
   CommonParameters parameters_{};
   DepthImage depthImage_;
   Program debugProgram_;
+  std::string debugDefines_;  // debugProgram_'s
   RenderTarget debugTarget_;  // RGBA8
   ScreenPass screen_;
   ImageF debugImage_;
@@ -80,6 +85,8 @@ class SinglePassBase : public ShadowTechnique {
   virtual void setTechniqueUniforms(const Program& program) const = 0;
   // Compile-time settings of the screen pass's shaders.
   virtual std::string shaderDefines() const { return {}; }
+  // The layout of the shadow map's depth image (depth_image.h).
+  virtual DepthImage::Layout depthLayout() const { return DepthImage::Layout::Blocks; }
   // Passes of the technique's own between the shadow map and the screen pass (timed under
   // their own names), and what they made bound to both screen-pass programs.
   virtual void renderInputs(const Texture& /*shadowMap*/, PassTimer& /*timer*/) {}
