@@ -8,7 +8,8 @@
 # results/paper/README.md. Extra arguments go to each `testbed sweep` (e.g. --backend egl).
 # PAPER_SPECS="gi2016-table2 edtsm-star-table4" regenerates only those, keeping the rest.
 # Each table replaces its folder as soon as it finishes; when a later one fails (exit 2 for a
-# bad spec), the finished ones stay and the message names them.
+# bad spec), the finished ones stay and the message names them. The sweeps run in a work
+# folder, so a path among the extra arguments (--plugin) must be absolute.
 # On a cluster, run each spec through scripts/slurm/submit.sh instead and copy the merged
 # folders in.
 # EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
@@ -17,7 +18,7 @@
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$repo/scripts/setup.sh"
-testbed="${TESTBED_BUILD_DIR:-$repo/build}/testbed/app/testbed"
+testbed="$(cd "${TESTBED_BUILD_DIR:-$repo/build}" && pwd)/testbed/app/testbed"
 if [ -n "${PAPER_SPECS:-}" ]; then
   read -r -a specs <<< "$PAPER_SPECS"
 else
@@ -26,6 +27,11 @@ else
 fi
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
+# The sweeps run in $work, which mirrors the repository's paper/ and results/paper/, with
+# paths relative to it: the command each table's header records is then the one that
+# reproduces it from the repository's root, and names no folder of this machine.
+ln -s "$repo/paper" "$work/paper"
+mkdir -p "$work/results/paper"
 mkdir -p "$repo/results/paper"
 
 # The index of every table in results/paper/, rewritten after each table.
@@ -56,16 +62,16 @@ for name in "${specs[@]}"; do
   n=$((n + 1))
   echo "== paper table $n/${#specs[@]}: $name" >&2
   status=0
-  "$testbed" sweep --spec "$repo/paper/$name.json" --out "$work/$name" "$@" || status=$?
+  (cd "$work" && "$testbed" sweep --spec "paper/$name.json" --out "results/paper/$name" "$@") || status=$?
   if [ "$status" -ne 0 ]; then
     # The tables finished before this one are already in results/paper/ and stay there.
     echo "paper.sh: $name failed (exit $status); kept ${#done_tables[@]} finished table(s)${done_tables[*]:+: ${done_tables[*]}}" >&2
     exit "$status"
   fi
-  rm -f "$work/$name/spec.json"  # the spec is paper/$name.json itself
+  rm -f "$work/results/paper/$name/spec.json"  # the spec is paper/$name.json itself
   # Each finished table replaces its old folder at once, so results/paper/ never holds half a table.
   rm -rf "$repo/results/paper/$name.new"
-  cp -r "$work/$name" "$repo/results/paper/$name.new"
+  cp -r "$work/results/paper/$name" "$repo/results/paper/$name.new"
   rm -rf "$repo/results/paper/$name"
   mv "$repo/results/paper/$name.new" "$repo/results/paper/$name"
   done_tables+=("$name")
