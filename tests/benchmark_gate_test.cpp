@@ -1,4 +1,4 @@
-// The benchmark CI gate (README "Performance"): `compare` on every bundled scene at the
+// The benchmark CI gate (docs/benchmarks-and-check.md "The benchmark gate"): `compare` on every bundled scene at the
 // small size of tests/baselines/settings, checked against the committed baselines in
 // tests/baselines/<scene>/metrics.json. Accuracy (every error metric) and memory must be
 // exactly the baseline's — llvmpipe is deterministic; `testbed check` then reports speed

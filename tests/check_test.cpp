@@ -1,4 +1,4 @@
-// End-to-end tests of `testbed check` (README "Regression check") on the committed
+// End-to-end tests of `testbed check` (docs/benchmarks-and-check.md "Regression check") on the committed
 // results/: exit codes 0 / 3 / 2, what the report names, and --out. No GL: each run takes
 // milliseconds.
 #include <algorithm>

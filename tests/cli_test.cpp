@@ -1,7 +1,7 @@
-// End-to-end tests of the `testbed` command line (README "Command line", "Record",
-// "Scene files"). They run the real binary as a subprocess, the way users and scripts do,
-// so they catch what unit tests cannot: option parsing, exit codes, the one-line error
-// contract, and which files end up in --out.
+// End-to-end tests of the `testbed` command line (README "Command line"; docs/record.md
+// "The record"; docs/scenes.md "Scenes"). They run the real binary as a subprocess, the
+// way users and scripts do, so they catch what unit tests cannot: option parsing, exit
+// codes, the one-line error contract, and which files end up in --out.
 //
 // Every test works in its own temporary directory, so tests can run in parallel (ctest
 // runs each discovered test as its own process) and leave nothing behind.
@@ -103,7 +103,7 @@ TEST(CliRender, BundledSceneWritesExactlyTheThreeOutputsAndARecord) {
 
   const json record = expectRenderOutputs(out, "sm");
   ASSERT_TRUE(record.is_object());
-  // The README's "Record" fields.
+  // The record's fields (docs/record.md).
   EXPECT_EQ(record.value("technique", ""), "sm");
   EXPECT_EQ(record.value("scene", ""), "wall");  // the scene's "name"
   EXPECT_EQ(record.value("size", json()), json::array({160, 90}));

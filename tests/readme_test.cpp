@@ -1,6 +1,6 @@
 // The README documents what the code does: its technique table is the registry's. It is
-// checked, not rewritten: adding a technique includes regenerating the table (README,
-// "Writing a technique").
+// checked, not rewritten: adding a technique includes regenerating the table
+// (docs/writing-a-technique.md, "Writing a technique").
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -17,8 +17,8 @@ TEST(Readme, TechniqueTableMatchesTheRegistry) {
   std::stringstream text;
   text << file.rdbuf();
   EXPECT_NE(text.str().find(techniqueTableMarkdown()), std::string::npos)
-      << "README.md's technique table is stale (README: Writing a technique, step 5); paste the output of "
-         "`build/testbed/app/testbed list --markdown` over it:\n"
+      << "README.md's technique table is stale (docs/writing-a-technique.md \"Writing a technique\", step 5); "
+         "paste the output of `build/testbed/app/testbed list --markdown` over it:\n"
       << techniqueTableMarkdown();
 }
 

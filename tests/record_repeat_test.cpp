@@ -1,5 +1,5 @@
 // A record from real frames: with --repeat > 1 each measure's total is the sum of its
-// passes as written (README "Record"), and the record reads back to the same bytes.
+// passes as written (docs/record.md "The record"), and the record reads back to the same bytes.
 #include <gtest/gtest.h>
 
 #include "testbed/harness/record.h"

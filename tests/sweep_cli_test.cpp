@@ -1,4 +1,4 @@
-// `testbed sweep` and `testbed merge` end to end (README "Paper runs"): bad specs and
+// `testbed sweep` and `testbed merge` end to end (docs/paper-runs.md "Paper runs"): bad specs and
 // shards are one line and exit 2 with nothing written; a whole run writes the records,
 // table, plot and close-up figure; shards joined by merge hold the same cells as a whole
 // run; merge refuses shards of other specs or builds, missing or doubled shards, and keeps

@@ -80,7 +80,7 @@ TEST_F(RevectorizationScene, AgainstShadowVolumesOnTheBundledScenes) {
       // stacked_occluders: shadows of thin bars (2.5 texels at 256²) at a small angle to a
       // map axis. A tip texel is a U across the stripe and an L along it, which RSMSS's
       // r_x·r_y < 0 rule lights almost fully (a leak), and improved SMSR closes the lit
-      // notches between the stripes: figures printed, not asserted against sm (README,
+      // notches between the stripes: figures printed, not asserted against sm (docs/techniques.md,
       // "Revectorization: what the bundled scenes show").
       const bool axisAlignedStripes = name == "stacked_occluders";
       if (!axisAlignedStripes) {

@@ -1,5 +1,5 @@
 // `testbed merge --out DIR SHARD_DIR...`: joins the shards of one sweep into the tables a
-// single run writes (README "Paper runs"). Refuses shards of another spec, other
+// single run writes (docs/paper-runs.md "Paper runs"). Refuses shards of another spec, other
 // overrides or another build, a shard given twice or missing, and a cell without its
 // record; records of different backends are kept in tables of their own.
 #include <fstream>

@@ -1,5 +1,5 @@
 // `testbed sweep --spec FILE [--shard K/N] [common overrides] --out DIR`: runs a paper
-// table's cells (README "Paper runs") through the same frame harness as `compare`, and
+// table's cells (docs/paper-runs.md "Paper runs") through the same frame harness as `compare`, and
 // writes records.json (every record, as compare's metrics.json, each with its "cell"),
 // sweep.json (what the shard is: spec, build, shard, machine, backend) and spec.json; a
 // whole run (no --shard, or 1/1) also writes the tables, plots and close-up figure.

@@ -31,7 +31,7 @@ CommandRunner addViewCommand(CLI::App& app) {
   command->add_option("--screenshot", options->screenshot, "with --frames: the 3D view as PNG (or EXR)")->needs(frames);
   command->add_option("--window-screenshot", options->windowScreenshot, "with --frames: the whole window as PNG")
       ->needs(frames);
-  command->add_option("--script", options->script, "replay actions from FILE, one per frame (README \"Viewer\")");
+  command->add_option("--script", options->script, "replay actions from FILE, one per frame (docs/viewer.md)");
   options->common.addTo(*command);
   command->get_option("--out")->required(false)->description("folder for the P key's screenshots");
 

@@ -52,12 +52,13 @@ CommandRunner addRenderCommand(CLI::App& app);
 CommandRunner addGroundTruthCommand(CLI::App& app);
 CommandRunner addCompareCommand(CLI::App& app);
 #ifdef TESTBED_WITH_VIEWER
-// `view`: the interactive viewer (README "Viewer").
+// `view`: the interactive viewer (docs/viewer.md "Viewer").
 CommandRunner addViewCommand(CLI::App& app);
 #endif
-// `check`: exit 0 no regression, 3 regressions found, 2 bad input (README "Regression check").
+// `check`: exit 0 no regression, 3 regressions found, 2 bad input
+// (docs/benchmarks-and-check.md "Regression check").
 CommandRunner addCheckCommand(CLI::App& app);
-// `sweep` and `merge`: paper-style tables from a spec, optionally in shards (README "Paper runs").
+// `sweep` and `merge`: paper-style tables from a spec, optionally in shards (docs/paper-runs.md "Paper runs").
 CommandRunner addSweepCommand(CLI::App& app);
 CommandRunner addMergeCommand(CLI::App& app);
 

@@ -2,7 +2,7 @@
 // What `sweep` (one whole run) and `merge` (joined shards) write from the records: each
 // backend's table as <name>.md and <name>.json, its plot (<name>.png, <name>.svg, by
 // scripts/sweep_plot.py) and the close-up figure (<name>-closeup.png), plus the identity
-// files that let shards be checked and joined (README "Paper runs").
+// files that let shards be checked and joined (docs/paper-runs.md "Paper runs").
 #include <filesystem>
 #include <map>
 #include <string>

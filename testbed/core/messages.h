@@ -1,6 +1,6 @@
 #pragma once
-// What the testbed prints on stderr. Every message is one line (README "What bad input
-// gets"): names from the user (a scene path with a newline in it, a scene "name") are
+// What the testbed prints on stderr. Every message is one line (docs/bad-input.md "What bad
+// input gets"): names from the user (a scene path with a newline in it, a scene "name") are
 // escaped, and a progress line left open by a step that failed is ended before the error.
 #include <string>
 #include <string_view>

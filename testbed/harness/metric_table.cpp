@@ -68,7 +68,8 @@ const std::vector<Metric> kTable = {
      [](const Record& r, const Record*) -> Value { return double(r.memoryBytes) / 1024.0; }, nullptr},
     {"memory_mb", "", "memory MB", "", " MB", 2, CheckRule::None, 0, Better::Lower, kSweepMeasure, false, false,
      [](const Record& r, const Record*) -> Value { return double(r.memoryBytes) / (1024.0 * 1024.0); }, nullptr},
-    // The error block (README "Error metrics"); floors: 0.01 percentage points, 0.001 RMSE, 0.01 px.
+    // The error block (docs/ground-truth-and-metrics.md "Error metrics"); floors: 0.01 percentage
+    // points, 0.001 RMSE, 0.01 px.
     {"mismatch_pct", "/error/mismatch_pct", "mismatch %", "mismatch", "%", 3, CheckRule::Error, 0.01, Better::Lower,
      kReportColumn | kBrief, false, false, errorValue<&ErrorMetrics::mismatchPct>,
      storeError<&ErrorMetrics::mismatchPct>},

@@ -29,7 +29,7 @@ enum MetricUse : unsigned {
   kReportColumn = 1,   // a column of report.md, in table order
   kBrief = 2,          // the one-line summary of grid.png's rows and the progress lines
   kCounter = 4,        // a counter of testbed_benchmarks
-  kSweepMeasure = 8,   // a spec's "measure" (README "Paper runs")
+  kSweepMeasure = 8,   // a spec's "measure" (docs/paper-runs.md "Spec")
 };
 
 struct Metric {

@@ -1,5 +1,5 @@
 #pragma once
-// The record of one run (README "Record"): what `render`, `compare`, `sweep` and the viewer
+// The record of one run (docs/record.md "The record"): what `render`, `compare`, `sweep` and the viewer
 // write as T.json, metrics.json and records.json, and what `check`, `merge` and the reports
 // read back. One typed struct, written and read by nlohmann's to_json / from_json; the
 // metrics in it are placed and validated by the metric table (harness/metric_table.h).

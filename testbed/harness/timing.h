@@ -19,8 +19,8 @@ double frameTimeMs(const PassTimes& times, TimingSource source);
 double median(std::vector<double> values);
 
 // The figures of several timed frames: each pass's median, and as each measure's total the
-// sum of those medians, so that a record's total is the sum of its passes (README
-// "Record") whatever the number of frames. `order` is the first frame's.
+// sum of those medians, so that a record's total is the sum of its passes (docs/record.md
+// "The record") whatever the number of frames. `order` is the first frame's.
 PassTimes medianPassTimes(const std::vector<PassTimes>& frames);
 
 }  // namespace testbed

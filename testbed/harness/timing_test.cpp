@@ -15,7 +15,7 @@ PassTimes frame(double shadowMap, double visibility) {
   return t;
 }
 
-// README "Record": `total` is the sum of the passes, with --repeat > 1 too. The median of
+// docs/record.md "The record": `total` is the sum of the passes, with --repeat > 1 too. The median of
 // the frames' totals (here 8) would not be.
 TEST(Timing, TotalIsTheSumOfThePassMedians) {
   const PassTimes m = medianPassTimes({frame(1, 5), frame(10, 0), frame(2, 6)});

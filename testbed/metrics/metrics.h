@@ -1,5 +1,5 @@
 #pragma once
-// Error metrics of a technique's visibility image against the ground truth (README,
+// Error metrics of a technique's visibility image against the ground truth (docs/ground-truth-and-metrics.md,
 // "Error metrics") and an error heat map for people. The record's `error` block that holds
 // them is written by harness/record.h from the metric table (harness/metric_table.h).
 //
@@ -31,7 +31,7 @@ struct ErrorMetrics {
   int gtBoundaryPixels = 0;       // number of GT boundary pixels
 };
 
-// Conventions the README's definitions leave open:
+// Conventions the documented definitions leave open:
 // - A boundary pixel (GT or technique) is a receiver with a 4-neighbour that is a receiver
 //   of the other binary state; non-receivers never make a boundary. Distances are
 //   Euclidean in the image plane and may cross non-receiver pixels.
@@ -43,7 +43,7 @@ struct ErrorMetrics {
 //   boundary pixel. p95 is the value at index ceil(0.95 n) - 1 of the sorted pool. Neither
 //   image with a boundary: mean = p95 = 0. Exactly one with a boundary: mean = p95 = the
 //   image diagonal sqrt(w^2 + h^2), the worst distance possible.
-// - leak uses v > 0.5 (as the README defines it), overestimation v < 0.5, so a technique
+// - leak uses v > 0.5 (as the docs define it), overestimation v < 0.5, so a technique
 //   value of exactly 0.5 on a GT-shadow pixel is a mismatch but not a leak.
 //
 // Throws std::invalid_argument when an image is not one channel, the sizes differ, there

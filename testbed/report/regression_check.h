@@ -27,7 +27,7 @@ struct CheckRecord {
   std::string key() const;
 };
 
-// The records of one metrics.json array (a full record each, README "Record"; an error
+// The records of one metrics.json array (a full record each, docs/record.md "The record"; an error
 // block required). The references (groundtruth, area) are skipped.
 // Throws InputError "<file>: [i].field: what" for a missing or mistyped field.
 std::vector<CheckRecord> parseCheckRecords(const nlohmann::json& records, const std::string& file);

@@ -10,7 +10,7 @@ namespace {
 
 using nlohmann::json;
 
-// A compare record of `technique` on bunny at 512² (README "Record").
+// A compare record of `technique` on bunny at 512² (docs/record.md "The record").
 json record(const std::string& technique, double wallMs = 20.0, double mismatch = 0.5) {
   return {{"technique", technique},
           {"scene", "bunny"},

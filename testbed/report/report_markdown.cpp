@@ -46,7 +46,8 @@ std::string reportMarkdown(const Comparison& c) {
                "vertex work it does at draw time, and only ratios mean much here"
              : "by GL timer queries")
      << "; `× sm frame` is the whole frame's, G-buffer pass included, as the papers time it"
-     << ". Errors are against the shadow-volume ground truth (README, Error metrics).\n\n";
+     << ". Errors are against the shadow-volume ground truth "
+        "(docs/ground-truth-and-metrics.md, \"Error metrics\").\n\n";
   std::string header = "| technique |", rule = "|---|";
   for (const Metric& m : metricTable())
     if (m.shownIn(kReportColumn)) {

@@ -1,5 +1,5 @@
 #pragma once
-// Scene description as read from a JSON scene file (format: README "Scene files").
+// Scene description as read from a JSON scene file (format: docs/scenes.md "Scenes").
 // Everything here is CPU-side and validated; GPU upload lives in render/gpu_scene.h.
 #include <filesystem>
 #include <string>

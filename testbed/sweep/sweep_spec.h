@@ -1,5 +1,5 @@
 #pragma once
-// A sweep spec (README "Paper runs"): the scenes, the table's rows (techniques with
+// A sweep spec (docs/paper-runs.md "Spec"): the scenes, the table's rows (techniques with
 // parameters) and columns (shadow map, output size, scene, subdivision, any parameter),
 // what is measured, and the paper's own figures beside each row, cited. Read from JSON
 // and validated like scene files: any mistake is one InputError naming the file and key.

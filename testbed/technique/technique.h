@@ -1,5 +1,5 @@
 #pragma once
-// The plugin interface every shadow technique implements (README: "Writing a technique").
+// The plugin interface every shadow technique implements (docs/writing-a-technique.md "Writing a technique").
 // A technique turns the frame's inputs into a screen-space visibility buffer: 1 = lit,
 // 0 = shadowed, in between for filtered techniques; receivers whose normal faces away
 // from the light are shadowed (glsl/receiver.glsl does that for every technique).

@@ -1,5 +1,5 @@
 #pragma once
-// `testbed view --script FILE`: actions replayed one per frame, one per line (README
+// `testbed view --script FILE`: actions replayed one per frame, one per line (docs/viewer.md
 // "Viewer" documents the format). The whole file is checked before the window opens: a bad
 // line throws InputError("FILE:LINE: ...").
 #include <filesystem>
