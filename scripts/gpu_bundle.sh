@@ -3,7 +3,7 @@
 # distribution (docs/gpu.md): the binaries, every shared library they load except glibc,
 # libstdc++ and the GL/EGL dispatch libraries the GPU machine provides (libstdc++ and
 # libgcc_s travel in lib-fallback/ for an older system), and stand-ins (scripts/gpu_stubs.py)
-# for the libraries only the osmesa backend, the Embree cross-check, the viewer and
+# for the libraries only the osmesa backend, the viewer and
 # OpenImageIO's exotic formats use, whose trees would weigh some 500 MB.
 # Usage: scripts/gpu_bundle.sh OUT.tar.xz [EXTRA_ELF...]   (EXTRA_ELF: e.g. the test binary)
 # The tarball unpacks to bundle/{bin,lib,lib-fallback}; bin/ keeps the build's file names.
@@ -17,7 +17,7 @@ elves=("$build/testbed/app/testbed" "$@")
 # Dropped from the closure: provided by any Linux system or by the GPU driver's glvnd.
 system='^(libc|libm|libpthread|libdl|librt|libresolv|ld-linux-x86-64|libEGL|libGL|libGLX|libOpenGL|libGLdispatch|libGLESv2)\.so'
 fallback='^(libstdc\+\+|libgcc_s)\.so'
-stubbed='^(libOSMesa|libembree3|libglfw|libopencv_(core|imgproc|videoio)|libav(codec|format|util)|libswscale|libopenvdb|libheif|libdcm(image|imgle|data)|liboflog|libofstd|libraw_r)\.so'
+stubbed='^(libOSMesa|libglfw|libopencv_(core|imgproc|videoio)|libav(codec|format|util)|libswscale|libopenvdb|libheif|libdcm(image|imgle|data)|liboflog|libofstd|libraw_r)\.so'
 
 stage="$(mktemp -d)"
 trap 'rm -rf "$stage"' EXIT

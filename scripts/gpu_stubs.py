@@ -12,7 +12,7 @@ object stand-in is zeros of the real size. The dynamic loader is satisfied (Debi
 OpenImageIO with BIND_NOW, so every import must resolve at start), while the libraries'
 own dependency trees (OSMesa's LLVM, OpenImageIO's OpenCV, FFmpeg and OpenVDB: some
 500 MB) stay behind. Only code paths the GPU bundle never takes (the osmesa backend, the
-Embree cross-check, the viewer, exotic image formats) reach a stand-in.
+viewer, exotic image formats) reach a stand-in.
 """
 import os
 import re
