@@ -4,7 +4,7 @@
 1. Per-pass GPU ms of the techniques with software-rasterizer devices, per shadow-map size,
    from GI 2016 Table 2's records (dragon, 1280x720), beside shadow mapping's passes.
 2. Agreement with llvmpipe: per bundled scene at 1024², each technique's mismatch % and
-   mean boundary distance on the GPU (results/gpu/compare) and on llvmpipe (results/).
+   mean boundary distance on the GPU (results/gpu/compare, metrics.egl.json) and on llvmpipe (results/).
 Usage: scripts/gpu_tables.py [RESULTS_DIR]   (default: the repository's results/)
 """
 import json
@@ -35,7 +35,7 @@ def agreement_table():
     print("| scene | technique | mismatch % GPU | mismatch % llvmpipe | boundary px GPU | boundary px llvmpipe |")
     print("|---|---|---:|---:|---:|---:|")
     for scene in sorted(os.listdir(os.path.join(results, "gpu/compare"))):
-        ours = {r["technique"]: r["error"] for r in records(os.path.join(results, "gpu/compare", scene, "metrics.json"))}
+        ours = {r["technique"]: r["error"] for r in records(os.path.join(results, "gpu/compare", scene, "metrics.egl.json"))}
         cpu = {r["technique"]: r["error"] for r in records(os.path.join(results, scene, "metrics.json"))}
         for technique in sorted(ours):
             if technique == "groundtruth" or technique not in cpu:
