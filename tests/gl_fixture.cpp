@@ -1,6 +1,7 @@
 #include "tests/gl_fixture.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <utility>
@@ -11,8 +12,12 @@
 
 namespace testbed::test {
 
+// $TESTBED_TEST_BACKEND runs the GL tests on another backend (egl on a GPU machine).
 GlContext& sharedContext() {
-  static std::unique_ptr<GlContext> context = createContext("osmesa");
+  static std::unique_ptr<GlContext> context = [] {
+    const char* backend = std::getenv("TESTBED_TEST_BACKEND");
+    return createContext(backend && *backend ? backend : "osmesa");
+  }();
   return *context;
 }
 
