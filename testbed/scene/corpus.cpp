@@ -59,7 +59,7 @@ class Draw {
 };
 
 struct MeshInfo {
-  fs::path file;
+  fs::path file, folder;  // folder: the --meshes folder it was found in
   std::string reference;  // what the scene's "mesh" key holds
   std::string stem;       // for scene names
   std::size_t triangles = 0;
@@ -78,8 +78,8 @@ std::string sanitized(const std::string& text) {
   return out;
 }
 
-std::vector<fs::path> meshCandidates(const std::vector<fs::path>& folders) {
-  std::set<fs::path> found;
+std::vector<std::pair<fs::path, fs::path>> meshCandidates(const std::vector<fs::path>& folders) {
+  std::set<std::pair<fs::path, fs::path>> found;  // file, the folder it was found in
   for (const auto& folder : folders) {
     std::error_code ec;
     if (!fs::is_directory(folder, ec)) continue;
@@ -88,19 +88,19 @@ std::vector<fs::path> meshCandidates(const std::vector<fs::path>& folders) {
          it.increment(ec)) {
       const std::string ext = lower(it->path().extension().string());
       if (it->is_regular_file(ec) && (ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl"))
-        found.insert(it->path());
+        found.insert({it->path(), folder});
     }
   }
   return {found.begin(), found.end()};
 }
 
 // Loads every candidate; the unusable ones go to `skipped` with the reason.
-std::vector<MeshInfo> usableMeshes(const std::vector<fs::path>& candidates, Json& skipped) {
+std::vector<MeshInfo> usableMeshes(const std::vector<std::pair<fs::path, fs::path>>& candidates, Json& skipped) {
   std::vector<MeshInfo> meshes;
   std::map<std::string, std::string> seen;  // triangles and extents → first file
   std::error_code ec;
   const fs::path assets = fs::weakly_canonical(assetDirectory(), ec);
-  for (const auto& file : candidates) {
+  for (const auto& [file, folder] : candidates) {
     auto skip = [&](const std::string& why) { skipped.push_back({{"mesh", file.generic_string()}, {"why", why}}); };
     TriMesh mesh;
     try {
@@ -111,6 +111,7 @@ std::vector<MeshInfo> usableMeshes(const std::vector<fs::path>& candidates, Json
     }
     MeshInfo info;
     info.file = file;
+    info.folder = folder;
     info.triangles = mesh.n_faces();
     info.stem = sanitized(file.stem().string());
     const bool asset = fs::weakly_canonical(file.parent_path(), ec) == assets && lower(file.extension().string()) == ".off";
@@ -239,7 +240,16 @@ struct SceneSample {
 
 SceneSample sampleScene(const CorpusOptions& options, std::size_t index, const std::vector<MeshInfo>& meshes) {
   Draw draw(splitmix64(options.seed ^ splitmix64(index)));
-  const MeshInfo& mesh = meshes[draw.index(meshes.size())];
+  // A folder first, then a mesh in it: assimp's many small test cubes would otherwise
+  // outnumber the scanned meshes of the assets.
+  std::vector<fs::path> folders;
+  for (const auto& m : meshes)
+    if (std::find(folders.begin(), folders.end(), m.folder) == folders.end()) folders.push_back(m.folder);
+  const fs::path& folder = folders[draw.index(folders.size())];
+  std::vector<const MeshInfo*> inFolder;
+  for (const auto& m : meshes)
+    if (m.folder == folder) inFolder.push_back(&m);
+  const MeshInfo& mesh = *inFolder[draw.index(inFolder.size())];
   Placed placed = placeMesh(mesh, draw);
   Json objects = Json::array();
   objects.push_back({{"primitive", "plane"}, {"size", {2 * kPlaneHalf, 2 * kPlaneHalf}}});
@@ -337,7 +347,9 @@ SceneSample sampleScene(const CorpusOptions& options, std::size_t index, const s
   const glm::dvec3 pointToLight = spot ? glm::normalize(glm::dvec3(light.eye) - point) : toLight;
   const double sinIncidence = std::max(0.02, pointToLight.y);
   const double occluderToReceiver = std::max(0.5, (placed.bottom + placed.top) / 2) / sinIncidence;
-  const double widthAcross = penumbraPx * pixelSide * sinIncidence;  // across the rays
+  // The side edges of a shadow run along the rays' projection, so their penumbra is not
+  // stretched on the receiver: its width there is its width across the rays.
+  const double widthAcross = penumbraPx * pixelSide;
   double radius = 0;
   if (spot) {
     const double lightToOccluder = std::max(1.0, glm::length(glm::dvec3(light.eye) - point) - occluderToReceiver);
