@@ -75,7 +75,9 @@ TEST(Corpus, EveryScenePassesTheParserAndUnusableMeshesAreListed) {
     EXPECT_LE(s["elevation_deg"].get<double>(), 85.0);
     lights.insert(s["light"].get<std::string>());
     cameras.insert(s["camera"].get<std::string>());
-    if (s["camera"] == "close-up") EXPECT_GE(s["pixels_per_texel"].get<double>(), 3.99) << s.dump();
+    if (s["camera"] == "close-up") {
+      EXPECT_GE(s["pixels_per_texel"].get<double>(), 3.99) << s.dump();
+    }
   }
   EXPECT_EQ(lights.size(), 2u);
   EXPECT_EQ(cameras.size(), 2u);
