@@ -61,5 +61,7 @@ CommandRunner addCheckCommand(CLI::App& app);
 // `sweep` and `merge`: paper-style tables from a spec, optionally in shards (docs/paper-runs.md "Paper runs").
 CommandRunner addSweepCommand(CLI::App& app);
 CommandRunner addMergeCommand(CLI::App& app);
+// `corpus`: generated scene files and their manifest (docs/corpus.md).
+CommandRunner addCorpusCommand(CLI::App& app);
 
 }  // namespace testbed

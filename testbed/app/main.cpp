@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
                                                   testbed::addCompareCommand(app),
                                                   testbed::addCheckCommand(app),
                                                   testbed::addSweepCommand(app),
-                                                  testbed::addMergeCommand(app)};
+                                                  testbed::addMergeCommand(app),
+                                                  testbed::addCorpusCommand(app)};
 #ifdef TESTBED_WITH_VIEWER
   commands.push_back(testbed::addViewCommand(app));
 #endif

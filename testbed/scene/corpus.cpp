@@ -1,0 +1,444 @@
+// The corpus generator (docs/corpus.md). Each scene: one mesh occluder on an 80 × 80
+// receiver plane, sometimes a wall that catches its shadow or a second (primitive)
+// occluder; a spot or directional light at an elevation of 3°–85°; an overview camera or a
+// close-up of the shadow where a texel covers 4–64 pixels; an area-light radius giving a
+// penumbra of 3–30 pixels. Scene i draws from its own stream, so it does not depend on N.
+#include "testbed/scene/corpus.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <set>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include "testbed/core/error.h"
+
+namespace testbed {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+constexpr double kPlaneHalf = 40;          // the receiver plane spans [-40, 40]² at y = 0
+constexpr std::size_t kMinTriangles = 4;   // fewer cannot make a shape worth a shadow
+constexpr std::size_t kMaxTriangles = 3'000'000;
+constexpr double kMinThickness = 0.02;     // smallest / largest extent below this: flat
+
+// Written numbers are rounded to 1e-4 so that a last-ulp difference of a libm cannot
+// change the text; + 0.0 turns -0 into 0.
+double r4(double x) { return std::round(x * 1e4) / 1e4 + 0.0; }
+Json vec(glm::dvec3 v) { return Json::array({r4(v.x), r4(v.y), r4(v.z)}); }
+// A point as the scene file will hold it, for the estimates.
+glm::vec3 rounded(glm::dvec3 v) { return glm::vec3(r4(v.x), r4(v.y), r4(v.z)); }
+
+std::uint64_t splitmix64(std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ull;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+// Uniform draws from mt19937_64's fixed output, not std::uniform_real_distribution (whose
+// algorithm each standard library chooses).
+class Draw {
+ public:
+  explicit Draw(std::uint64_t seed) : engine_(seed) {}
+  double uniform() { return double(engine_() >> 11) * 0x1.0p-53; }  // [0, 1)
+  double between(double lo, double hi) { return lo + (hi - lo) * uniform(); }
+  double logBetween(double lo, double hi) { return lo * std::pow(hi / lo, uniform()); }
+  bool chance(double p) { return uniform() < p; }
+  std::size_t index(std::size_t n) { return std::min(n - 1, std::size_t(uniform() * double(n))); }
+
+ private:
+  std::mt19937_64 engine_;
+};
+
+struct MeshInfo {
+  fs::path file, folder;  // folder: the --meshes folder it was found in
+  std::string reference;  // what the scene's "mesh" key holds
+  std::string stem;       // for scene names
+  std::size_t triangles = 0;
+  std::vector<glm::dvec3> points;
+  glm::dvec3 lo{0}, hi{0};
+};
+
+std::string lower(std::string text) {
+  for (auto& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+std::string sanitized(const std::string& text) {
+  std::string out;
+  for (char c : lower(text)) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
+  return out;
+}
+
+std::vector<std::pair<fs::path, fs::path>> meshCandidates(const std::vector<fs::path>& folders) {
+  std::set<std::pair<fs::path, fs::path>> found;  // file, the folder it was found in
+  for (const auto& folder : folders) {
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec)) continue;
+    const auto options = fs::directory_options::skip_permission_denied;
+    for (auto it = fs::recursive_directory_iterator(folder, options, ec); !ec && it != fs::recursive_directory_iterator();
+         it.increment(ec)) {
+      const std::string ext = lower(it->path().extension().string());
+      if (it->is_regular_file(ec) && (ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl"))
+        found.insert({it->path(), folder});
+    }
+  }
+  return {found.begin(), found.end()};
+}
+
+// Loads every candidate; the unusable ones go to `skipped` with the reason.
+std::vector<MeshInfo> usableMeshes(const std::vector<std::pair<fs::path, fs::path>>& candidates, Json& skipped) {
+  std::vector<MeshInfo> meshes;
+  std::map<std::string, std::string> seen;  // triangles and extents → first file
+  std::error_code ec;
+  const fs::path assets = fs::weakly_canonical(assetDirectory(), ec);
+  for (const auto& [file, folder] : candidates) {
+    auto skip = [&](const std::string& why) { skipped.push_back({{"mesh", file.generic_string()}, {"why", why}}); };
+    TriMesh mesh;
+    try {
+      mesh = readMeshFile(file);
+    } catch (const InputError& error) {
+      skip(error.what());
+      continue;
+    }
+    MeshInfo info;
+    info.file = file;
+    info.folder = folder;
+    info.triangles = mesh.n_faces();
+    info.stem = sanitized(file.stem().string());
+    const bool asset = fs::weakly_canonical(file.parent_path(), ec) == assets && lower(file.extension().string()) == ".off";
+    info.reference = asset ? file.stem().string() : fs::absolute(file).generic_string();
+    info.lo = glm::dvec3(1e300);
+    info.hi = glm::dvec3(-1e300);
+    for (const auto v : mesh.vertices()) {
+      const auto& p = mesh.point(v);
+      info.points.emplace_back(p[0], p[1], p[2]);
+      info.lo = glm::min(info.lo, info.points.back());
+      info.hi = glm::max(info.hi, info.points.back());
+    }
+    const glm::dvec3 extent = info.hi - info.lo;
+    const double largest = std::max({extent.x, extent.y, extent.z});
+    const double smallest = std::min({extent.x, extent.y, extent.z});
+    if (info.triangles < kMinTriangles) {
+      skip("only " + std::to_string(info.triangles) + " triangles (fewer than " + std::to_string(kMinTriangles) + ")");
+    } else if (info.triangles > kMaxTriangles) {
+      skip(std::to_string(info.triangles) + " triangles, more than " + std::to_string(kMaxTriangles));
+    } else if (!(smallest > kMinThickness * largest)) {
+      skip("flat (thinner than 2 % of its size): it would lie in the receiver plane");
+    } else {
+      Json key = {info.triangles, r4(extent.x / largest), r4(extent.y / largest), r4(extent.z / largest)};
+      const auto [it, fresh] = seen.emplace(key.dump(), file.generic_string());
+      if (!fresh) {
+        skip("the same mesh as " + it->second + " (triangle count and proportions)");
+        continue;
+      }
+      meshes.push_back(std::move(info));
+    }
+  }
+  return meshes;
+}
+
+glm::dvec3 onSphere(double elevationDeg, double azimuthDeg) {
+  const double e = glm::radians(elevationDeg), a = glm::radians(azimuthDeg);
+  return {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
+}
+
+glm::dvec3 clampToPlane(glm::dvec3 p, double margin) {
+  const double limit = kPlaneHalf - margin;
+  return {std::clamp(p.x, -limit, limit), p.y, std::clamp(p.z, -limit, limit)};
+}
+
+// The mesh occluder: fitted to `size`, rotated, resting on the plane (or lifted above it).
+struct Placed {
+  Json object;
+  glm::dvec3 foot{0};
+  double bottom = 0, top = 0;
+};
+
+Placed placeMesh(const MeshInfo& mesh, Draw& draw) {
+  const double size = draw.between(10, 22);
+  const double rx = std::array<double, 3>{0, -90, 90}[draw.index(3)], ry = r4(draw.between(0, 360));
+  const double lift = draw.chance(0.25) ? draw.between(1, size / 2) : 0;
+  const glm::dvec3 extent = mesh.hi - mesh.lo;
+  const double scale = size / std::max({extent.x, extent.y, extent.z});
+  const glm::dvec3 centre = (mesh.lo + mesh.hi) * 0.5;
+  // As the scene parser applies it: fit, then rotate X then Y (parser: Z·Y·X).
+  const glm::dmat4 rotation = glm::rotate(glm::dmat4(1), glm::radians(ry), {0, 1, 0}) *
+                              glm::rotate(glm::dmat4(1), glm::radians(rx), {1, 0, 0});
+  double lo = 1e300, hi = -1e300;
+  for (const auto& p : mesh.points) {
+    const double y = (rotation * glm::dvec4((p - centre) * scale, 1)).y;
+    lo = std::min(lo, y);
+    hi = std::max(hi, y);
+  }
+  Placed placed;
+  placed.foot = {draw.between(-8, 8), 0, draw.between(-8, 8)};
+  const glm::dvec3 translate = placed.foot + glm::dvec3(0, lift - lo, 0);
+  placed.bottom = r4(translate.y) + lo;
+  placed.top = r4(translate.y) + hi;
+  placed.object = {{"mesh", mesh.reference}, {"fit", r4(size)}, {"rotate", vec({rx, ry, 0})}, {"translate", vec(translate)}};
+  return placed;
+}
+
+// A primitive beside the mesh: sphere, box, cylinder or torus.
+Json secondOccluder(const glm::dvec3& foot, Draw& draw, double& top, std::string& kind) {
+  const double angle = draw.between(0, 360), ring = draw.between(14, 26), size = draw.between(2, 7);
+  const double lift = draw.chance(0.3) ? draw.between(2, 10) : 0;
+  const glm::dvec3 at = clampToPlane(foot + ring * onSphere(0, angle), size + 1);
+  kind = std::array<const char*, 4>{"sphere", "box", "cylinder", "torus"}[draw.index(4)];
+  Json object = {{"primitive", kind}};
+  double height = 0;
+  if (kind == "sphere") {
+    object["radius"] = r4(size);
+    height = 2 * size;
+  } else if (kind == "box") {
+    const glm::dvec3 box = 2 * size * glm::dvec3(draw.between(0.3, 1), draw.between(0.3, 1), draw.between(0.3, 1));
+    object["size"] = vec(box);
+    object["rotate"] = vec({0, draw.between(0, 90), 0});
+    height = r4(box.y);
+  } else if (kind == "cylinder") {
+    object["radius"] = r4(size / 2);
+    object["height"] = r4(size * draw.between(1, 3));
+    height = object["height"].get<double>();
+  } else {
+    const double major = size, minor = size * draw.between(0.15, 0.4);
+    object["major"] = r4(major);
+    object["minor"] = r4(minor);
+    const bool standing = draw.chance(0.5);
+    if (standing) object["rotate"] = vec({90, draw.between(0, 180), 0});
+    height = 2 * (standing ? r4(major) + r4(minor) : r4(minor));
+  }
+  object["translate"] = vec({at.x, r4(lift) + height / 2, at.z});
+  top = r4(lift) + height;
+  return object;
+}
+
+// The largest distance of the box [-40, 40] × [0, top] × [-40, 40] from the directional
+// light's axis through the origin: the half size of a square footprint that holds it.
+double directionalExtent(const glm::dvec3& direction, double top) {
+  double extent = 0;
+  for (double x : {-kPlaneHalf, kPlaneHalf})
+    for (double y : {0.0, top})
+      for (double z : {-kPlaneHalf, kPlaneHalf}) {
+        const glm::dvec3 p(x, y, z);
+        extent = std::max(extent, glm::length(p - glm::dot(p, direction) * direction));
+      }
+  return extent * 1.02;
+}
+
+struct SceneSample {
+  Json scene, manifest;
+};
+
+SceneSample sampleScene(const CorpusOptions& options, std::size_t index, const std::vector<MeshInfo>& meshes) {
+  Draw draw(splitmix64(options.seed ^ splitmix64(index)));
+  // A folder first, then a mesh in it: assimp's many small test cubes would otherwise
+  // outnumber the scanned meshes of the assets.
+  std::vector<fs::path> folders;
+  for (const auto& m : meshes)
+    if (std::find(folders.begin(), folders.end(), m.folder) == folders.end()) folders.push_back(m.folder);
+  const fs::path& folder = folders[draw.index(folders.size())];
+  std::vector<const MeshInfo*> inFolder;
+  for (const auto& m : meshes)
+    if (m.folder == folder) inFolder.push_back(&m);
+  const MeshInfo& mesh = *inFolder[draw.index(inFolder.size())];
+  Placed placed = placeMesh(mesh, draw);
+  Json objects = Json::array();
+  objects.push_back({{"primitive", "plane"}, {"size", {2 * kPlaneHalf, 2 * kPlaneHalf}}});
+  objects.push_back(placed.object);
+  double top = placed.top;
+
+  // The light: toLight points from the scene towards it; shadows run along shadowDir.
+  const bool spot = draw.chance(0.5);
+  const double elevation = r4(draw.between(3, 85)), azimuth = r4(draw.between(0, 360));
+  const glm::dvec3 toLight = onSphere(elevation, azimuth);
+  const glm::dvec3 shadowDir = -onSphere(0, azimuth);
+  std::vector<std::string> extras;
+
+  const bool wall = draw.chance(0.35);
+  const double wallDistance = draw.between(10, 22);
+  if (wall) {
+    const double height = draw.between(8, 25);
+    const glm::dvec3 at = placed.foot + wallDistance * shadowDir;
+    const double facing = glm::degrees(std::atan2(shadowDir.x, shadowDir.z));
+    objects.push_back({{"primitive", "box"}, {"size", vec({50, height, 1.5})}, {"rotate", vec({0, facing, 0})},
+                       {"translate", vec({at.x, height / 2, at.z})}});
+    top = std::max(top, height);
+    extras.push_back("wall");
+  }
+  if (draw.chance(0.4)) {
+    std::string kind;
+    double occluderTop = 0;
+    objects.push_back(secondOccluder(placed.foot, draw, occluderTop, kind));
+    top = std::max(top, occluderTop);
+    extras.push_back("occluder:" + kind);
+  }
+
+  LightDesc light;
+  Json lightJson;
+  if (spot) {
+    const double distance = draw.between(60, 160), reach = draw.between(30, 60);
+    light.type = LightType::Spot;
+    light.eye = rounded(placed.foot + distance * toLight);
+    light.target = rounded(placed.foot);
+    light.fovDegrees = float(r4(std::clamp(2 * glm::degrees(std::atan(reach / distance)), 15.0, 120.0)));
+    lightJson = {{"type", "spot"}, {"eye", vec(light.eye)}, {"target", vec(light.target)}, {"fov", light.fovDegrees},
+                 {"near", 1}, {"far", 1000}};
+  } else {
+    light.type = LightType::Directional;
+    light.direction = rounded(-toLight);
+    light.target = glm::vec3(0);
+    light.extent = float(r4(directionalExtent(-toLight, top)));
+    lightJson = {{"type", "directional"}, {"direction", vec(-toLight)}, {"target", vec({0, 0, 0})}, {"extent", light.extent}};
+  }
+
+  // The camera: an overview of the mesh and its surroundings, or a close-up of a point
+  // along the mesh's shadow at a chosen number of pixels per texel.
+  CameraDesc camera;
+  camera.fovYDegrees = float(r4(draw.between(35, 60)));
+  camera.farPlane = 600;
+  const bool closeUp = draw.chance(0.5);
+  glm::dvec3 point = placed.foot;  // where the estimates are taken (on the plane)
+  double wantedPixelsPerTexel = 0;
+  if (closeUp) {
+    // Shadow length of the mesh's top, kept on the plane and in front of a wall.
+    double reach = std::min(placed.top / std::tan(glm::radians(elevation)), 30.0);
+    if (wall) reach = std::min(reach, wallDistance - 3);
+    point = clampToPlane(placed.foot + std::max(0.0, draw.between(0.3, 1.0) * reach) * shadowDir, 4);
+    wantedPixelsPerTexel = draw.logBetween(4, 64);
+    // Looking along the shadow from beyond it, or from the side when a wall stands there.
+    const double turn = wall ? draw.between(70, 110) : draw.between(-60, 60);
+    const double sideways = draw.chance(0.5) ? turn : -turn;
+    const double viewElevation = draw.between(25, 75);
+    const glm::dvec3 away =
+        onSphere(viewElevation, glm::degrees(std::atan2(shadowDir.x, shadowDir.z)) + sideways);
+    // Unit distance first, then scaled to the distance that gives the wanted ratio
+    // (pixelsPerTexel falls with the square of the camera's distance).
+    camera.target = glm::vec3(point);
+    camera.eye = glm::vec3(point + away);
+    const double atUnit = pixelsPerTexel(light, camera, options.image, options.shadowMap, glm::vec3(point));
+    const double distance = std::max(2.0, std::sqrt(atUnit / wantedPixelsPerTexel));
+    camera.eye = glm::vec3(point + distance * away);
+    camera.nearPlane = float(r4(std::clamp(distance / 20, 0.05, 1.0)));
+  } else {
+    const double distance = draw.between(60, 120), viewElevation = draw.between(20, 65);
+    camera.target = glm::vec3(placed.foot + glm::dvec3(draw.between(-4, 4), placed.top / 3, draw.between(-4, 4)));
+    camera.eye = camera.target + glm::vec3(distance * onSphere(viewElevation, draw.between(0, 360)));
+    point = {camera.target.x, 0, camera.target.z};
+  }
+  camera.eye = rounded(camera.eye);
+  camera.target = rounded(camera.target);
+  const double ratio = pixelsPerTexel(light, camera, options.image, options.shadowMap, glm::vec3(point));
+
+  // The area light: a penumbra of the wanted width in pixels where the estimate is taken,
+  // cast by an edge at half the mesh's height above the receiver.
+  const double penumbraPx = draw.logBetween(3, 30);
+  const glm::dvec3 eyeToPoint = glm::dvec3(camera.eye) - point;
+  const double pixelSide = 2 * glm::length(eyeToPoint) * std::tan(glm::radians(double(camera.fovYDegrees)) / 2) /
+                           options.image.y / std::sqrt(std::max(0.01, eyeToPoint.y / glm::length(eyeToPoint)));
+  const glm::dvec3 pointToLight = spot ? glm::normalize(glm::dvec3(light.eye) - point) : toLight;
+  const double sinIncidence = std::max(0.02, pointToLight.y);
+  const double occluderToReceiver = std::max(0.5, (placed.bottom + placed.top) / 2) / sinIncidence;
+  // The side edges of a shadow run along the rays' projection, so their penumbra is not
+  // stretched on the receiver: its width there is its width across the rays.
+  const double widthAcross = penumbraPx * pixelSide;
+  double radius = 0;
+  if (spot) {
+    const double lightToOccluder = std::max(1.0, glm::length(glm::dvec3(light.eye) - point) - occluderToReceiver);
+    radius = std::min(widthAcross * lightToOccluder / (2 * occluderToReceiver), 0.2 * lightToOccluder);
+  } else {
+    radius = std::min(glm::degrees(std::atan(widthAcross / (2 * occluderToReceiver))), 10.0);
+  }
+  lightJson["radius"] = r4(std::max(radius, 1e-3));
+
+  char number[32];
+  std::snprintf(number, sizeof number, "%03zu", index);
+  const std::string name = number + ("-" + mesh.stem);
+  std::string extrasText;
+  for (const auto& e : extras) extrasText += ", " + e;
+  SceneSample sample;
+  sample.scene = {
+      {"name", name},
+      {"comment", "Generated by testbed corpus --seed " + std::to_string(options.seed) + " (scene " +
+                      std::to_string(index) + "): " + mesh.stem + ", " + (spot ? "spot" : "directional") +
+                      " light at elevation " + Json(elevation).dump() + " deg, " +
+                      (closeUp ? "close-up" : "overview") + " camera" + extrasText + "."},
+      {"camera", {{"eye", vec(camera.eye)}, {"target", vec(camera.target)}, {"fov_y", camera.fovYDegrees},
+                  {"near", r4(camera.nearPlane)}, {"far", r4(camera.farPlane)}}},
+      {"light", lightJson},
+      {"objects", objects}};
+  sample.manifest = {{"file", name + ".json"},
+                     {"mesh", mesh.file.generic_string()},
+                     {"light", spot ? "spot" : "directional"},
+                     {"elevation_deg", elevation},
+                     {"azimuth_deg", azimuth},
+                     {"camera", closeUp ? "close-up" : "overview"},
+                     {"extras", extras},
+                     {"estimated_at", vec(point)},
+                     {"pixels_per_texel", r4(ratio)},
+                     {"wanted_pixels_per_texel", closeUp ? Json(r4(wantedPixelsPerTexel)) : Json(nullptr)},
+                     {"penumbra_px", r4(penumbraPx)},
+                     {"radius", lightJson["radius"]}};
+  return sample;
+}
+
+}  // namespace
+
+std::vector<fs::path> defaultCorpusMeshFolders() { return {assetDirectory(), "/usr/share/assimp/models"}; }
+
+double pixelsPerTexel(const LightDesc& light, const CameraDesc& camera, glm::ivec2 image, int shadowMap, glm::vec3 point) {
+  const glm::dvec3 p(point);
+  double texelSide = 0, sinLight = 0;
+  if (light.type == LightType::Spot) {
+    const glm::dvec3 toLight = glm::dvec3(light.eye) - p;
+    texelSide = 2 * glm::length(toLight) * std::tan(glm::radians(double(light.fovDegrees)) / 2) / shadowMap;
+    sinLight = toLight.y / glm::length(toLight);
+  } else {
+    texelSide = 2 * double(light.extent) / shadowMap;
+    sinLight = -glm::normalize(glm::dvec3(light.direction)).y;
+  }
+  const glm::dvec3 toEye = glm::dvec3(camera.eye) - p;
+  const double pixelSide = 2 * glm::length(toEye) * std::tan(glm::radians(double(camera.fovYDegrees)) / 2) / image.y;
+  const double sinView = toEye.y / glm::length(toEye);
+  // Grazing rays stretch without bound; 0.01 (0.6°) keeps the estimate finite.
+  return (texelSide * texelSide / std::max(0.01, sinLight)) / (pixelSide * pixelSide / std::max(0.01, sinView));
+}
+
+Corpus generateCorpus(const CorpusOptions& options) {
+  Json skipped = Json::array();
+  const auto candidates = meshCandidates(options.meshFolders);
+  const auto meshes = usableMeshes(candidates, skipped);
+  if (meshes.empty()) {
+    std::string folders;
+    for (const auto& f : options.meshFolders) folders += (folders.empty() ? "" : ", ") + f.generic_string();
+    throw InputError("--meshes: no usable .off/.obj/.ply/.stl mesh in " + (folders.empty() ? "(no folder)" : folders));
+  }
+  Corpus corpus;
+  Json manifest = {{"generator", "testbed corpus"},
+                   {"seed", options.seed},
+                   {"count", options.count},
+                   {"assumed", {{"size", {options.image.x, options.image.y}}, {"shadow_map", options.shadowMap}}},
+                   {"mesh_folders", Json::array()},
+                   {"meshes", Json::array()},
+                   {"skipped", skipped},
+                   {"scenes", Json::array()}};
+  for (const auto& f : options.meshFolders) manifest["mesh_folders"].push_back(f.generic_string());
+  for (const auto& m : meshes) manifest["meshes"].push_back({{"mesh", m.file.generic_string()}, {"triangles", m.triangles}});
+  for (int i = 0; i < options.count; ++i) {
+    SceneSample sample = sampleScene(options, std::size_t(i), meshes);
+    corpus.scenes.push_back({sample.manifest["file"].get<std::string>(), sample.scene.dump(2) + "\n"});
+    manifest["scenes"].push_back(std::move(sample.manifest));
+  }
+  corpus.manifest = manifest.dump(2) + "\n";
+  return corpus;
+}
+
+}  // namespace testbed

@@ -1,0 +1,121 @@
+// The corpus generator on meshes written here: deterministic text, scenes that do not
+// depend on the count, every scene valid for the parser, unusable meshes skipped with a
+// reason, and the texel estimate pinned on cases worked by hand.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "testbed/core/error.h"
+#include "testbed/scene/corpus.h"
+#include "tests/cli_helpers.h"
+
+namespace testbed {
+namespace {
+
+// A closed tetrahedron (4 triangles), a flat square and a file that is no mesh.
+void writeMeshes(const test::TempDir& dir) {
+  test::writeFile(dir / "meshes/tetra.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  test::writeFile(dir / "meshes/sub/sheet.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 0 1\n0 0 1\n3 0 1 2\n3 0 2 3\n");
+  test::writeFile(dir / "meshes/broken.obj", "this is not a mesh\n");
+}
+
+CorpusOptions optionsFor(const test::TempDir& dir, std::uint64_t seed, int count) {
+  CorpusOptions options;
+  options.seed = seed;
+  options.count = count;
+  options.meshFolders = {dir / "meshes"};
+  return options;
+}
+
+TEST(Corpus, SameSeedSameTextOtherSeedOtherText) {
+  test::TempDir dir;
+  writeMeshes(dir);
+  const Corpus a = generateCorpus(optionsFor(dir, 7, 6)), b = generateCorpus(optionsFor(dir, 7, 6));
+  const Corpus c = generateCorpus(optionsFor(dir, 8, 6));
+  ASSERT_EQ(a.scenes.size(), 6u);
+  EXPECT_EQ(a.manifest, b.manifest);
+  for (std::size_t i = 0; i < a.scenes.size(); ++i) {
+    EXPECT_EQ(a.scenes[i].name, b.scenes[i].name);
+    EXPECT_EQ(a.scenes[i].text, b.scenes[i].text);
+    EXPECT_NE(a.scenes[i].text, c.scenes[i].text);
+  }
+}
+
+TEST(Corpus, SceneIDoesNotDependOnTheCount) {
+  test::TempDir dir;
+  writeMeshes(dir);
+  const Corpus few = generateCorpus(optionsFor(dir, 3, 2)), many = generateCorpus(optionsFor(dir, 3, 9));
+  EXPECT_EQ(few.scenes[0].text, many.scenes[0].text);
+  EXPECT_EQ(few.scenes[1].text, many.scenes[1].text);
+}
+
+TEST(Corpus, EveryScenePassesTheParserAndUnusableMeshesAreListed) {
+  test::TempDir dir;
+  writeMeshes(dir);
+  const Corpus corpus = generateCorpus(optionsFor(dir, 11, 40));
+  for (const auto& scene : corpus.scenes) {
+    SCOPED_TRACE(scene.name);
+    const Scene parsed = parseScene(nlohmann::json::parse(scene.text), dir / scene.name);
+    EXPECT_GE(parsed.objects.size(), 2u);
+    EXPECT_GT(parsed.light.radius, 0.0f);
+  }
+  const auto manifest = nlohmann::json::parse(corpus.manifest);
+  ASSERT_EQ(manifest["meshes"].size(), 1u);
+  EXPECT_NE(manifest["meshes"][0]["mesh"].get<std::string>().find("tetra.off"), std::string::npos);
+  ASSERT_EQ(manifest["skipped"].size(), 2u);  // sorted: broken.obj, then sub/sheet.off
+  EXPECT_NE(manifest["skipped"][0]["mesh"].get<std::string>().find("broken.obj"), std::string::npos);
+  EXPECT_NE(manifest["skipped"][1]["why"].get<std::string>().find("flat"), std::string::npos);
+  // Elevations within 3°–85°, both kinds of light and camera among 40 scenes, and every
+  // close-up at least at the wanted 4 pixels per texel (the estimate, taken again).
+  std::set<std::string> lights, cameras;
+  for (const auto& s : manifest["scenes"]) {
+    EXPECT_GE(s["elevation_deg"].get<double>(), 3.0);
+    EXPECT_LE(s["elevation_deg"].get<double>(), 85.0);
+    lights.insert(s["light"].get<std::string>());
+    cameras.insert(s["camera"].get<std::string>());
+    if (s["camera"] == "close-up") {
+      EXPECT_GE(s["pixels_per_texel"].get<double>(), 3.99) << s.dump();
+    }
+  }
+  EXPECT_EQ(lights.size(), 2u);
+  EXPECT_EQ(cameras.size(), 2u);
+}
+
+TEST(Corpus, NoUsableMeshIsAnInputError) {
+  test::TempDir dir;
+  test::writeFile(dir / "meshes/broken.obj", "not a mesh\n");
+  try {
+    generateCorpus(optionsFor(dir, 1, 1));
+    FAIL() << "expected an InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("--meshes: no usable"), std::string::npos) << error.what();
+  }
+}
+
+// Worked by hand: a directional light straight down with extent 51.2 gives texels of
+// 0.1 × 0.1 on the floor; a camera 10 above looking down with fov 90° at 720 rows gives
+// pixels of 20/720 on a side: (0.01) / (20/720)² = 12.96 pixels per texel.
+TEST(Corpus, PixelsPerTexelOnAWorkedCase) {
+  LightDesc sun;
+  sun.type = LightType::Directional;
+  sun.direction = {0, -1, 0};
+  sun.extent = 51.2f;
+  CameraDesc camera;
+  camera.eye = {0, 10, 0};
+  camera.fovYDegrees = 90;
+  EXPECT_NEAR(pixelsPerTexel(sun, camera, {1280, 720}, 1024, {0, 0, 0}), 12.96, 1e-4);
+  // A sun at 30° elevation stretches the texel to twice its area; a spot light 100 above
+  // with fov 90° has texels of 200/1024 on a side.
+  sun.direction = {std::cos(glm::radians(30.0f)), -0.5f, 0};
+  EXPECT_NEAR(pixelsPerTexel(sun, camera, {1280, 720}, 1024, {0, 0, 0}), 25.92, 1e-3);
+  LightDesc spot;
+  spot.eye = {0, 100, 0};
+  spot.fovDegrees = 90;
+  const double texel = 200.0 / 1024, pixel = 20.0 / 720;
+  EXPECT_NEAR(pixelsPerTexel(spot, camera, {1280, 720}, 1024, {0, 0, 0}), texel * texel / (pixel * pixel), 1e-3);
+}
+
+}  // namespace
+}  // namespace testbed

@@ -1,0 +1,102 @@
+#!/usr/bin/python3
+"""scripts/corpus_stats.py pinned on known answers: a bootstrap interval on a known
+distribution covers its mean, the Wilcoxon test on a textbook case gives its exact p,
+and the script on a small synthetic record set writes its tables and plots."""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SCRIPT = os.path.join(HERE, "..", "scripts", "corpus_stats.py")
+sys.path.insert(0, os.path.dirname(SCRIPT))
+import corpus_stats  # noqa: E402
+
+
+class KnownAnswers(unittest.TestCase):
+    def test_bootstrap_interval_covers_the_mean_of_a_known_distribution(self):
+        # 200 samples of 40 draws from an exponential of mean 2 (skewed, as error metrics
+        # are): a 95 % interval should cover 2 in about 95 % of them (binomial sd 1.5 %);
+        # its width about 2 · 1.96 · 2 / sqrt(40) = 1.24.
+        rng = np.random.default_rng(7)
+        covered, widths = 0, []
+        for i in range(200):
+            low, high = corpus_stats.bootstrap_mean_ci(rng.exponential(2.0, 40), resamples=2000, seed=i)
+            covered += low < 2.0 < high
+            widths.append(high - low)
+        self.assertGreaterEqual(covered, 176)  # 88 %
+        self.assertLessEqual(covered, 199)
+        self.assertAlmostEqual(float(np.median(widths)), 1.24, delta=0.25)
+        self.assertEqual(corpus_stats.bootstrap_mean_ci([2.0, 2.0, 2.0]), (2.0, 2.0))
+        self.assertIsNone(corpus_stats.bootstrap_mean_ci([1.0]))
+
+    def test_wilcoxon_on_darwins_maize_gives_the_exact_p(self):
+        # Darwin's cross- minus self-fertilised Zea mays heights (eighths of an inch), as
+        # Fisher analysed them in The Design of Experiments (1935), section 17: 15 pairs,
+        # W+ = 96, W- = 24; the exact two-sided p of the signed-rank test is 0.041259765625
+        # (= 2 · 1352 / 2^15).
+        d = np.array([6, 8, 14, 16, 23, 24, 28, 29, 41, -48, 49, 56, 60, -67, 75], dtype=float)
+        baseline = np.full(d.size, 100.0)
+        self.assertAlmostEqual(corpus_stats.wilcoxon_p(baseline + d, baseline), 0.041259765625, places=12)
+        self.assertIsNone(corpus_stats.wilcoxon_p(baseline, baseline))
+
+    def test_paired_comparison(self):
+        result = corpus_stats.paired([1.0, 4.0, 2.0, 0.0], [2.0, 2.0, 2.0, 0.0])
+        self.assertEqual(result["n"], 4)
+        self.assertAlmostEqual(result["win_rate"], (1 + 0.5 + 0.5) / 4)
+        self.assertEqual(result["ratio_n"], 3)  # the baseline's 0 leaves the ratio undefined
+        self.assertAlmostEqual(result["median_ratio"], 1.0)
+
+
+def record(technique, scene, mismatch, flag=None):
+    error = {"mismatch_pct": mismatch, "edge_mismatch_pct": 2 * mismatch, "rmse": mismatch / 10, "leak_pct": 0.0,
+             "overestimation_pct": 0.0, "boundary_px": {"mean": mismatch, "p95": 3 * mismatch}, "soft_rmse": None}
+    if flag:
+        error["flag"] = flag
+    return {"technique": technique, "scene": scene, "shadow_map": 1024, "error": error}
+
+
+class Script(unittest.TestCase):
+    def test_tables_and_plots_from_scene_folders(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            for i in range(6):
+                flag = "no shadow boundary" if i == 5 else None
+                records = [record("groundtruth", f"s{i}", 0.0), record("sm", f"s{i}", 1.0 + i, flag),
+                           record("pcf", f"s{i}", 0.5 + 0.4 * i, flag)]
+                os.makedirs(os.path.join(tmp, "runs", f"s{i}"))
+                with open(os.path.join(tmp, "runs", f"s{i}", "metrics.json"), "w") as handle:
+                    json.dump(records, handle)
+            out = os.path.join(tmp, "stats")
+            run = subprocess.run([sys.executable, SCRIPT, os.path.join(tmp, "runs"), "--out", out],
+                                 capture_output=True, text=True)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            self.assertIn("excluded scene s5: no shadow boundary", run.stderr)
+            with open(os.path.join(out, "stats.md")) as handle:
+                table = handle.read()
+            self.assertIn("excluded: scene s5 (no shadow boundary)", table)
+            self.assertIn("| pcf | 5 |", table)   # N stated, the flagged scene left out
+            self.assertIn("| sm | 5 |", table)
+            with open(os.path.join(out, "stats.json")) as handle:
+                result = json.load(handle)
+            pcf = result["metrics"]["mismatch_pct"]["pcf"]
+            self.assertAlmostEqual(pcf["summary"]["median"], 0.5 + 0.4 * 2)
+            self.assertEqual(pcf["vs_baseline"]["win_rate"], 1.0)
+            for name in ("mismatch_pct", "rmse", "boundary_p95_px"):
+                self.assertGreater(os.path.getsize(os.path.join(out, f"{name}.png")), 1000)
+            self.assertFalse(os.path.exists(os.path.join(out, "soft_rmse.png")))  # no values: no plot
+
+    def test_bad_input_exits_2_with_one_line(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            run = subprocess.run([sys.executable, SCRIPT, os.path.join(tmp, "missing"), "--out", tmp],
+                                 capture_output=True, text=True)
+            self.assertEqual(run.returncode, 2)
+            self.assertEqual(run.stderr.count("\n"), 1, run.stderr)
+            self.assertIn("missing: no such file or folder", run.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()
