@@ -37,13 +37,13 @@ json readShardFile(const fs::path& dir, const char* name, std::uint64_t maxBytes
 // True when `inner` is `outer` or lies inside it (both made absolute, links resolved as
 // far as they exist).
 bool within(const fs::path& inner, const fs::path& outer) {
-  const fs::path a = fs::weakly_canonical(fs::absolute(inner)), b = fs::weakly_canonical(fs::absolute(outer));
-  auto i = a.begin();
-  for (auto j = b.begin(); j != b.end(); ++j, ++i) {
-    if (j->empty()) continue;  // a trailing '/'
-    if (i == a.end() || *i != *j) return false;
-  }
-  return true;
+  auto resolved = [](const fs::path& p) {
+    std::string text = fs::weakly_canonical(fs::absolute(p)).lexically_normal().string();
+    while (text.size() > 1 && text.back() == '/') text.pop_back();
+    return text;
+  };
+  const std::string a = resolved(inner), b = resolved(outer);
+  return a == b || b == "/" || a.rfind(b + "/", 0) == 0;
 }
 
 struct ShardDir {
