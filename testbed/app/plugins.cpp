@@ -41,9 +41,9 @@ std::string loaderMessage(const std::string& file) {
 // (calling it would jump into data and crash).
 bool isFunctionSymbol(void* address) {
   Dl_info info{};
-  const ElfW(Sym)* symbol = nullptr;
-  if (!dladdr1(address, &info, reinterpret_cast<void**>(&symbol), RTLD_DL_SYMENT) || !symbol) return false;
-  const int type = ELFW(ST_TYPE)(symbol->st_info);
+  void* entry = nullptr;
+  if (!dladdr1(address, &info, &entry, RTLD_DL_SYMENT) || !entry) return false;
+  const int type = ELF64_ST_TYPE(static_cast<const ElfW(Sym)*>(entry)->st_info);  // the same macro for ELF32
   return info.dli_saddr == address && (type == STT_FUNC || type == STT_GNU_IFUNC);
 }
 
