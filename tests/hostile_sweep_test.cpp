@@ -51,8 +51,9 @@ std::string bigEndian(std::uint32_t v) {
 // A PNG of a few dozen bytes whose header asks for width × height RGB pixels.
 std::string pngHeaderOnly(std::uint32_t width, std::uint32_t height) {
   const std::string ihdr = "IHDR" + bigEndian(width) + bigEndian(height) + std::string{8, 2, 0, 0, 0};
-  return std::string("\x89PNG\r\n\x1a\n", 8) + bigEndian(13) + ihdr + bigEndian(crc32(ihdr)) + bigEndian(0) + "IEND" +
-         bigEndian(crc32("IEND"));
+  const std::string idat = std::string("IDAT") + "\x78\x9c";  // the start of a zlib stream: pixels follow "later"
+  return std::string("\x89PNG\r\n\x1a\n", 8) + bigEndian(13) + ihdr + bigEndian(crc32(ihdr)) + bigEndian(2) + idat +
+         bigEndian(crc32(idat)) + bigEndian(0) + "IEND" + bigEndian(crc32("IEND"));
 }
 
 TEST(HostileSweep, SpecsAreReadStrictlyAndCappedBeforeAnythingRenders) {
