@@ -4,6 +4,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/sysmacros.h>
 #include <sys/stat.h>
 
@@ -195,19 +196,24 @@ TEST(HostileCli, CheckInputsAreValidated) {
   EXPECT_NE(run.out.find("frame time is 0"), std::string::npos) << run.out;
 }
 
-// SIGTERM and SIGINT mid-run: the staging folder and the output folder the run created
-// are gone; earlier outputs in an existing folder stay as they were. SIGKILL cannot be
+// SIGTERM, SIGINT and the other catchable terminating signals (a closed pipe, Ctrl-\,
+// a hang-up) mid-run: the staging folder and the output folder the run created are gone; earlier outputs in an existing folder stay as they were. SIGKILL cannot be
 // caught: it leaves only the hidden staging folder, never a file a user could take for
 // output.
 TEST(HostileCli, InterruptedRunsLeaveNothingOfTheirOwn) {
   TempDir tmp;
+  rlimit core{};  // SIGQUIT's default action dumps core: not here (the soft limit, inherited)
+  ::getrlimit(RLIMIT_CORE, &core);
+  core.rlim_cur = 0;
+  ::setrlimit(RLIMIT_CORE, &core);
   writeFile(tmp / "existing" / "sm.json", "earlier\n");
   struct Case {
     int signal;
     fs::path out;
   };
   for (const Case& c : {Case{SIGTERM, tmp / "made" / "by" / "run"}, Case{SIGINT, tmp / "existing"},
-                        Case{SIGKILL, tmp / "killed"}}) {
+                        Case{SIGQUIT, tmp / "quit" / "run"}, Case{SIGPIPE, tmp / "pipe" / "run"},
+                        Case{SIGHUP, tmp / "hup" / "run"}, Case{SIGKILL, tmp / "killed"}}) {
     SCOPED_TRACE(strsignal(c.signal));
     const std::vector<std::string> args = {TESTBED_BINARY, "compare", "--scene", kWall, "--size", "160x90",
                                            "--shadow-map", "128", "--repeat", "50", "--out", c.out.string()};
@@ -223,6 +229,7 @@ TEST(HostileCli, InterruptedRunsLeaveNothingOfTheirOwn) {
     sigemptyset(&defaults);
     sigaddset(&defaults, SIGINT);
     sigaddset(&defaults, SIGTERM);
+    for (int other : {SIGQUIT, SIGPIPE, SIGHUP}) sigaddset(&defaults, other);
     posix_spawnattr_setsigdefault(&attributes, &defaults);
     posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
     pid_t pid = 0;
@@ -239,8 +246,8 @@ TEST(HostileCli, InterruptedRunsLeaveNothingOfTheirOwn) {
     ::waitpid(pid, &status, 0);
     EXPECT_TRUE(staging) << "the run never started staging";
     EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == c.signal) << "status " << status;
-    if (c.signal == SIGTERM) {
-      EXPECT_FALSE(fs::exists(tmp / "made")) << "the folders it created are removed";
+    if (c.signal != SIGINT && c.signal != SIGKILL) {
+      EXPECT_FALSE(fs::exists(c.out.parent_path())) << "the folders it created are removed";
     } else if (c.signal == SIGINT) {
       EXPECT_EQ(filesIn(c.out), std::vector<std::string>{"sm.json"});
       EXPECT_TRUE(fileHolds(c.out / "sm.json", "earlier\n"));

@@ -139,6 +139,11 @@ TEST(Plugin, LibraryWithoutRegistrationFunctionIsRejected) {
   expectRejected(TESTBED_PLUGIN_BAD_NO_ENTRY, "exports no testbed_register_plugin");
 }
 
+// Entry names exported as data symbols: refused from the ELF symbol table, never called.
+TEST(Plugin, EntryPointsThatAreDataNotFunctionsAreRejected) {
+  expectRejected(TESTBED_PLUGIN_BAD_DATA_ENTRY, "testbed_plugin_api_version is not a function");
+}
+
 TEST(Plugin, IdOfAnInTreeTechniqueIsRejected) {
   expectRejected(TESTBED_PLUGIN_BAD_DUPLICATE_ID, "technique 'sm': the id is already registered");
 }

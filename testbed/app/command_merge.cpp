@@ -1,15 +1,21 @@
 // `testbed merge --out DIR SHARD_DIR...`: joins the shards of one sweep into the tables a
-// single run writes (docs/paper-runs.md "Paper runs"). Refuses shards of another spec, other
-// overrides or another build, a shard given twice or missing, and a cell without its
-// record; records of different backends are kept in tables of their own.
-#include <fstream>
+// single run writes (docs/paper-runs.md "Paper runs"). Shards are files from elsewhere, so everything
+// is verified before it is used (docs/input-limits.md): each file read by the strict
+// capped reader; the spec fingerprint recomputed from the shard's own spec.json and
+// overrides; shards of another spec, other overrides or another build, a shard given
+// twice or missing refused; each record matched against its cell; figure images decoded
+// only at their cell's size and channels; --out never an input. Records of different
+// backends are kept in tables of their own.
 #include <iostream>
 #include <set>
 
+#include "groundtruth/shadow_volumes.h"
 #include "testbed/app/commands.h"
 #include "testbed/app/plugins.h"
 #include "testbed/app/sweep_report.h"
 #include "testbed/core/error.h"
+#include "testbed/io/json_input.h"
+#include "testbed/technique/registry.h"
 
 namespace testbed {
 namespace {
@@ -17,14 +23,27 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-json readJson(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": missing (not a sweep shard folder?)");
-  try {
-    return json::parse(in);
-  } catch (const json::parse_error& error) {
-    throw InputError(file.string() + ": not valid JSON (" + std::string(error.what()) + ")");
-  }
+// A shard's sweep.json is a few hundred bytes; spec.json is a spec (sweep_spec.h's cap).
+constexpr std::uint64_t kMaxManifestBytes = 1ull << 20;
+
+json readShardFile(const fs::path& dir, const char* name, std::uint64_t maxBytes) {
+  const fs::path file = dir / name;
+  std::error_code error;
+  if (!fs::exists(fs::symlink_status(file, error)))
+    throw InputError(file.string() + ": missing (not a sweep shard folder?)");
+  return readJsonInput(file, maxBytes);
+}
+
+// True when `inner` is `outer` or lies inside it (both made absolute, links resolved as
+// far as they exist).
+bool within(const fs::path& inner, const fs::path& outer) {
+  auto resolved = [](const fs::path& p) {
+    std::string text = fs::weakly_canonical(fs::absolute(p)).lexically_normal().string();
+    while (text.size() > 1 && text.back() == '/') text.pop_back();
+    return text;
+  };
+  const std::string a = resolved(inner), b = resolved(outer);
+  return a == b || b == "/" || a.rfind(b + "/", 0) == 0;
 }
 
 struct ShardDir {
@@ -37,6 +56,26 @@ std::string field(const ShardDir& s, const char* name) {
   if (!s.manifest.contains(name) || !s.manifest[name].is_string())
     throw InputError((s.dir / "sweep.json").string() + ": " + name + ": missing or not a string");
   return s.manifest[name].get<std::string>();
+}
+
+// What the record of `cell` must say about itself: the cell's technique, sizes, depth
+// format and its parameters resolved as the sweep resolved them.
+void matchRecord(const Record& record, const SweepCell& cell, const std::string& where) {
+  const RegisteredTechnique& technique =
+      cell.technique == kGroundTruthId ? shadowVolumeGroundTruth() : findTechnique(cell.technique);
+  const json params = resolveParameters(cell.technique, technique.info->parameters, cell.params).toJson();
+  const glm::ivec2 size = parseSize(cell.size);
+  auto differs = [&](const char* field, const std::string& got, const std::string& expected) {
+    throw InputError(where + "." + field + ": " + got + ", but cell " + std::to_string(*record.cell) + " is " + expected +
+                     " (a record edited or from another spec)");
+  };
+  if (record.technique != cell.technique) differs("technique", record.technique, cell.technique);
+  if (record.width != size.x || record.height != size.y)
+    differs("width", std::to_string(record.width) + "x" + std::to_string(record.height), cell.size);
+  if (record.shadowMap != cell.shadowMap)
+    differs("shadow_map", std::to_string(record.shadowMap), std::to_string(cell.shadowMap));
+  if (record.depthFormat != cell.depthFormat) differs("depth_format", record.depthFormat, cell.depthFormat);
+  if (record.params != params) differs("params", briefJson(record.params), briefJson(params));
 }
 
 }  // namespace
@@ -57,16 +96,27 @@ CommandRunner addMergeCommand(CLI::App& app) {
   return {command, [options]() {
     if (fs::exists(options->out) && !fs::is_directory(options->out))
       throw InputError("--out: " + options->out + " exists and is not a folder");
+    for (const auto& dir : options->shards)
+      if (within(options->out, dir))
+        throw InputError("--out " + options->out + ": is the shard " + dir + " or inside it; merge never writes over its inputs");
     loadPlugins(options->plugins);
     std::vector<ShardDir> shards;
     for (const auto& dir : options->shards) {
-      ShardDir s{dir, readJson(fs::path(dir) / "sweep.json"), readJson(fs::path(dir) / "records.json"),
-                 readJson(fs::path(dir) / "spec.json"), {}};
+      ShardDir s{dir, readShardFile(dir, "sweep.json", kMaxManifestBytes), readShardFile(dir, "records.json", kMaxJsonInputBytes),
+                 readShardFile(dir, "spec.json", kMaxSweepSpecBytes), {}};
+      const std::string manifest = (s.dir / "sweep.json").string();
+      if (!s.manifest.is_object()) throw InputError(manifest + ": expected an object, got " + briefJson(s.manifest));
       try {
         s.shard = parseShard(field(s, "shard"));
       } catch (const InputError& error) {
-        throw InputError((s.dir / "sweep.json").string() + ": shard: " + error.what());
+        throw InputError(manifest + ": shard: " + error.what());
       }
+      if (!s.manifest.contains("overrides")) throw InputError(manifest + ": overrides: missing");
+      overridesFromJson(s.manifest["overrides"], manifest + ": overrides");
+      // The fingerprint is recomputed, not trusted: an edited spec.json is another spec.
+      if (specFingerprint(s.spec, s.manifest["overrides"]) != field(s, "spec_fingerprint"))
+        throw InputError((s.dir / "spec.json").string() +
+                         ": does not match the shard's spec_fingerprint (edited after the run, or from another shard)");
       if (!s.records.is_array()) throw InputError((s.dir / "records.json").string() + ": expected an array of records");
       shards.push_back(std::move(s));
     }
@@ -89,7 +139,8 @@ CommandRunner addMergeCommand(CLI::App& app) {
         throw InputError("merge: shard " + std::to_string(k) + "/" + std::to_string(first.shard.count) + " is missing");
 
     const SweepSpec spec = parseSweepSpec(first.spec, field(first, "spec_file"), false);
-    const SweepPlan plan = planSweep(spec, overridesFromJson(first.manifest.at("overrides")));
+    const SweepPlan plan =
+        planSweep(spec, overridesFromJson(first.manifest["overrides"], (first.dir / "sweep.json").string() + ": overrides"));
     std::vector<Record> records;
     std::map<std::size_t, const ShardDir*> ownerOf;
     for (const auto& s : shards)
@@ -102,6 +153,7 @@ CommandRunner addMergeCommand(CLI::App& app) {
         if (!s.shard.owns(cell) || !ownerOf.emplace(cell, &s).second)
           throw InputError(where + ".cell: cell " + std::to_string(cell) + " does not belong to shard " + s.shard.text() +
                            " or is there twice");
+        matchRecord(record, plan.cells[cell], where);
         records.push_back(std::move(record));
       }
     for (std::size_t cell = 0; cell < plan.cells.size(); ++cell)
@@ -114,8 +166,11 @@ CommandRunner addMergeCommand(CLI::App& app) {
     std::map<std::size_t, FigureImages> figureImages;
     for (std::size_t cell : figureCells(spec, plan)) {
       const fs::path dir = ownerOf.at(cell)->dir;
-      if (fs::exists(dir / figureFileName(cell, "exr")))
-        figureImages[cell] = {readImage(dir / figureFileName(cell, "exr")), readImage(dir / figureFileName(cell, "png"))};
+      const glm::ivec2 size = parseSize(plan.cells[cell].size);
+      std::error_code error;
+      if (fs::exists(fs::symlink_status(dir / figureFileName(cell, "exr"), error)))
+        figureImages[cell] = {readImage(dir / figureFileName(cell, "exr"), {size.x, size.y, 1}),
+                              readImage(dir / figureFileName(cell, "png"), {size.x, size.y, 3})};
     }
     std::string commandLine = "testbed merge --out " + options->out, machines, backends;
     std::set<std::string> hosts, allBackends;

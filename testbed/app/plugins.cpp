@@ -1,6 +1,7 @@
 #include "testbed/app/plugins.h"
 
 #include <dlfcn.h>
+#include <link.h>
 
 #include <filesystem>
 #include <set>
@@ -35,6 +36,17 @@ std::string loaderMessage(const std::string& file) {
   return text;
 }
 
+// Whether `address` is where a function symbol of a loaded library starts, by the ELF
+// symbol table: a data symbol under an entry point's name is refused before it is called
+// (calling it would jump into data and crash).
+bool isFunctionSymbol(void* address) {
+  Dl_info info{};
+  void* entry = nullptr;
+  if (!dladdr1(address, &info, &entry, RTLD_DL_SYMENT) || !entry) return false;
+  const int type = ELF64_ST_TYPE(static_cast<const ElfW(Sym)*>(entry)->st_info);  // the same macro for ELF32
+  return info.dli_saddr == address && (type == STT_FUNC || type == STT_GNU_IFUNC);
+}
+
 void loadPlugin(const std::string& path, std::set<void*>& loaded) {
   const std::string where = "--plugin " + path;
   std::error_code ec;
@@ -66,6 +78,11 @@ void loadPlugin(const std::string& path, std::set<void*>& loaded) {
     throw InputError(where + ": not a testbed plugin: it exports no " +
                      (entry ? "testbed_plugin_api_version" : "testbed_register_plugin") +
                      " function (define both with TESTBED_PLUGIN from testbed/technique/plugin.h)");
+  for (const auto& [name, address] : {std::pair<const char*, void*>{"testbed_plugin_api_version", reinterpret_cast<void*>(version)},
+                                      {"testbed_register_plugin", reinterpret_cast<void*>(entry)}})
+    if (!isFunctionSymbol(address))
+      throw InputError(where + ": not a testbed plugin: " + name +
+                       " is not a function (define both with TESTBED_PLUGIN from testbed/technique/plugin.h)");
   if (const int v = version(); v != TESTBED_PLUGIN_API_VERSION)
     throw InputError(where + ": built for plugin API version " + std::to_string(v) + ", this testbed loads version " +
                      std::to_string(TESTBED_PLUGIN_API_VERSION) + ": rebuild it against this testbed");

@@ -8,7 +8,9 @@
 #include <set>
 #include <sstream>
 
+#include "testbed/app/commands.h"
 #include "testbed/core/error.h"
+#include "testbed/io/json_input.h"
 #include "testbed/sweep/sweep_figure.h"
 
 extern char** environ;
@@ -64,12 +66,42 @@ json overridesJson(const SweepOverrides& o) {
   return j;
 }
 
-SweepOverrides overridesFromJson(const json& j) {
+SweepOverrides overridesFromJson(const json& j, const std::string& where) {
+  auto fail = [&](const std::string& key, const std::string& what) {
+    throw InputError(where + (key.empty() ? "" : "." + key) + ": " + what);
+  };
+  if (!j.is_object()) fail("", "expected an object, got " + briefJson(j));
+  auto text = [&](const std::string& key) {
+    if (!j[key].is_string()) fail(key, "expected a string, got " + briefJson(j[key]));
+    return j[key].get<std::string>();
+  };
+  auto integer = [&](const std::string& key, int lo, int hi) {
+    const json& v = j[key];
+    if (!v.is_number_integer() || v.get<std::int64_t>() < lo || v.get<std::int64_t>() > hi)
+      fail(key, "expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ", got " + briefJson(v));
+    return int(v.get<std::int64_t>());
+  };
   SweepOverrides o;
-  if (j.contains("size")) o.size = j["size"].get<std::string>();
-  if (j.contains("shadow_map")) o.shadowMap = j["shadow_map"].get<int>();
-  if (j.contains("depth_format")) o.depthFormat = j["depth_format"].get<std::string>();
-  if (j.contains("repeat")) o.repeat = j["repeat"].get<int>();
+  for (const auto& [key, value] : j.items()) {
+    if (key == "size") {
+      o.size = text(key);
+      try {
+        parseSize(*o.size);
+      } catch (const InputError& error) {
+        fail(key, error.what());
+      }
+    } else if (key == "shadow_map") {
+      o.shadowMap = integer(key, 1, 16384);
+    } else if (key == "depth_format") {
+      o.depthFormat = text(key);
+      if (*o.depthFormat != "16" && *o.depthFormat != "24" && *o.depthFormat != "32f")
+        fail(key, "expected 16, 24 or 32f, got " + briefJson(value));
+    } else if (key == "repeat") {
+      o.repeat = integer(key, 1, 10000);
+    } else {
+      fail(key, "unknown key (allowed: depth_format, repeat, shadow_map, size)");
+    }
+  }
   return o;
 }
 

@@ -24,7 +24,9 @@ std::string hostDescription();  // host name and CPU model
 // The fingerprint of a spec document with the command line's overrides.
 std::string specFingerprint(const nlohmann::json& document, const nlohmann::json& overrides);
 nlohmann::json overridesJson(const SweepOverrides& overrides);
-SweepOverrides overridesFromJson(const nlohmann::json& overrides);
+// Reads a shard's "overrides" back, every field checked: throws InputError
+// "<where>.<key>: <what>".
+SweepOverrides overridesFromJson(const nlohmann::json& overrides, const std::string& where);
 
 struct FigureImages {
   ImageF visibility;  // one channel, NaN background

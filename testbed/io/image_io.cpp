@@ -8,6 +8,9 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imageio.h>
 
+#include "testbed/core/error.h"
+#include "testbed/io/input_file.h"
+
 namespace testbed {
 namespace {
 
@@ -75,6 +78,29 @@ ImageF readImage(const std::filesystem::path& file) {
   image.pixels.resize(std::size_t(spec.width) * spec.height * spec.nchannels);
   if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
     throw std::runtime_error(file.string() + ": read failed: " + in->geterror());
+  return image;
+}
+
+ImageF readImage(const std::filesystem::path& file, const ImageShape& expected) {
+  auto fail = [&](const std::string& what) { throw InputError(file.string() + ": " + what); };
+  std::string bytes = readInputFile(file, kMaxImageFileBytes);
+  // Decoded from the bytes read, so that the checks and the pixels are about one file.
+  OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+  OIIO::ImageSpec config;
+  auto in = OIIO::ImageInput::open(file.string(), &config, &memory);
+  if (!in) fail("not a readable image: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  auto shape = [](int w, int h, int c) {
+    return std::to_string(w) + "x" + std::to_string(h) + ", " + std::to_string(c) + " channel" + (c == 1 ? "" : "s");
+  };
+  if (spec.width != expected.width || spec.height != expected.height || spec.nchannels != expected.channels ||
+      spec.depth != 1)
+    fail("the image is " + shape(spec.width, spec.height, spec.nchannels) + ", expected " +
+         shape(expected.width, expected.height, expected.channels));
+  ImageF image{expected.width, expected.height, expected.channels, {}};
+  image.pixels.resize(std::size_t(image.width) * std::size_t(image.height) * std::size_t(image.channels));
+  if (!in->read_image(0, 0, 0, image.channels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
+    fail("cannot read the pixels: " + in->geterror());
   return image;
 }
 

@@ -2,6 +2,7 @@
 // Image files through OpenImageIO. Pixel rows are top-down (as files store them); GL
 // readbacks are flipped by the caller. Commands write their images through OutputFiles
 // (output_files.h), which stages and commits them; encodeImage gives it the bytes.
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -27,6 +28,17 @@ void writeImage(const std::filesystem::path& file, const ImageF& image);
 // The file's bytes in memory, the format chosen by `name`'s extension (.png or .exr).
 std::vector<unsigned char> encodeImage(const std::string& name, const ImageF& image);
 ImageF readImage(const std::filesystem::path& file);
+
+// What a file must hold to be read by the checked readImage.
+struct ImageShape {
+  int width = 0, height = 0, channels = 0;
+};
+inline constexpr std::uint64_t kMaxImageFileBytes = 2ull << 30;
+// For images from elsewhere (a shard's figure cells): read through input_file.h (a regular
+// file, at most kMaxImageFileBytes) and decoded only when its header declares exactly
+// `expected`, so a small file cannot ask for gigabytes or a mismatched one be read out of
+// bounds. Throws InputError "<file>: <problem>".
+ImageF readImage(const std::filesystem::path& file, const ImageShape& expected);
 
 }  // namespace testbed
 

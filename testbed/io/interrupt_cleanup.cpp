@@ -17,7 +17,11 @@ namespace testbed {
 namespace {
 
 constexpr int kSlots = 64;
-constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
+// Every signal whose default action ends the process and that can be caught (signal(7)):
+// a closed pipe (SIGPIPE), Ctrl-\ (SIGQUIT), a batch system's warning or time limit
+// (SIGUSR1, SIGXCPU), a full file-size limit (SIGXFSZ) clean up like Ctrl-C.
+constexpr int kSignals[] = {SIGINT,  SIGTERM, SIGHUP,  SIGQUIT, SIGPIPE,   SIGALRM,
+                            SIGUSR1, SIGUSR2, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF};
 
 // Paths are strdup'ed so that the handler reads plain C strings; a slot is emptied
 // (exchanged for null) before its string is freed.
@@ -92,7 +96,9 @@ void installHandlers() {
     for (int signal : kSignals) {
       struct sigaction current {};
       ::sigaction(signal, nullptr, &current);
-      if (current.sa_handler == SIG_IGN) continue;  // nohup and friends: keep ignoring it
+      // Only where the default action would end the process: nohup's SIG_IGN stays
+      // ignored, and a handler someone else installed (a profiler's SIGPROF) stays theirs.
+      if ((current.sa_flags & SA_SIGINFO) || current.sa_handler != SIG_DFL) continue;
       struct sigaction action {};
       action.sa_handler = onSignal;
       sigemptyset(&action.sa_mask);

@@ -1,5 +1,6 @@
 #pragma once
-// What a SIGINT, SIGTERM or SIGHUP removes before the process dies of it: the staging
+// What a catchable terminating signal (SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGALRM,
+// SIGUSR1/2, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF) removes before the process dies of it: the staging
 // folders of uncommitted outputs (with the files in them) and the output folders this
 // process created, if they are empty by then. The handler then re-raises the signal, so
 // the exit status still says which signal ended the run. SIGKILL cannot be caught: it

@@ -93,8 +93,8 @@ std::string briefJson(const json& value) {
   return text;
 }
 
-json readJsonInput(const std::filesystem::path& file) {
-  return parseJsonInput(readInputFile(file, kMaxJsonInputBytes), file);
+json readJsonInput(const std::filesystem::path& file, std::uint64_t maxBytes) {
+  return parseJsonInput(readInputFile(file, maxBytes), file);
 }
 
 json parseJsonInput(const std::string& text, const std::filesystem::path& file) {

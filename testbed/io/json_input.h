@@ -1,6 +1,7 @@
 #pragma once
-// JSON files the user hands in (scene files, metrics.json): read with the size cap of
-// input_file.h and parsed strictly, every fault one InputError line naming the file and,
+// JSON files the testbed reads (scene files, sweep specs, a shard's sweep.json, spec.json
+// and records.json, metrics.json): read with the size cap of input_file.h (regular files
+// only) and parsed strictly, every fault one InputError line naming the file and,
 // where there is one, the key path ("objects[1].scale"):
 //   - syntax errors with line and column;
 //   - numbers a double cannot hold (1e999), which nlohmann refuses before there is a value;
@@ -8,16 +9,19 @@
 //   - nesting deeper than kMaxJsonDepth (no input needs it, and printing or walking such a
 //     value recursively would overflow the stack).
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "testbed/io/input_file.h"
+
 namespace testbed {
 
 inline constexpr int kMaxJsonDepth = 64;
 
-nlohmann::json readJsonInput(const std::filesystem::path& file);
+nlohmann::json readJsonInput(const std::filesystem::path& file, std::uint64_t maxBytes = kMaxJsonInputBytes);
 // The same on text already read; `file` names it in messages.
 nlohmann::json parseJsonInput(const std::string& text, const std::filesystem::path& file);
 

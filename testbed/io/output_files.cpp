@@ -55,8 +55,12 @@ OutputFiles::OutputFiles(fs::path directory, std::string option)
       }
       if (errno != ENOENT) throw InputError(where + ": " + prefix.string() + ": " + lastError());
       DeferSignals registering;  // a signal between mkdir and the guard would leave it behind
-      if (::mkdir(prefix.c_str(), 0777) != 0)
+      if (::mkdir(prefix.c_str(), 0777) != 0) {
+        // Shards started together share parents (OUT/shards/K-of-N): a folder another
+        // process made meanwhile is success, as with mkdir -p; it is not ours to remove.
+        if (errno == EEXIST && ::stat(prefix.c_str(), &info) == 0 && S_ISDIR(info.st_mode)) continue;
         throw InputError(where + ": cannot create the folder " + prefix.string() + ": " + lastError());
+      }
       created_.push_back(prefix);
       guards_.push_back(std::make_unique<InterruptCleanup>(prefix.string(), InterruptCleanup::Kind::CreatedFolder));
     }

@@ -3,7 +3,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -105,6 +107,34 @@ TEST(OutputFiles, StagingIsAPrivateHiddenFolderRemovedAfterwards) {
     EXPECT_EQ(info.st_mode & 0777, 0700u);
   }
   EXPECT_TRUE(filesIn(tmp.path()).empty());
+}
+
+
+// Shards started together (the Slurm layout OUT/shards/K-of-N) create the same missing
+// parents at once: whoever loses the race on a parent finds it made, which is success.
+TEST(OutputFiles, SiblingsCreatedTogetherUnderAFreshParentAllSucceed) {
+  const TempDir tmp("testbed-output-files");
+  constexpr int kRounds = 20, kThreads = 8;
+  for (int round = 0; round < kRounds; ++round) {
+    const fs::path parent = tmp.path() / ("run-" + std::to_string(round)) / "shards";
+    std::atomic<int> ready{0}, failures{0};
+    std::vector<std::thread> threads;
+    for (int k = 0; k < kThreads; ++k)
+      threads.emplace_back([&, k] {
+        ++ready;
+        while (ready.load() < kThreads) std::this_thread::yield();  // start together
+        try {
+          OutputFiles files(parent / (std::to_string(k + 1) + "-of-" + std::to_string(kThreads)));
+          files.writeText("records.json", "[]\n");
+          files.commit();
+        } catch (const std::exception&) {
+          ++failures;
+        }
+      });
+    for (auto& t : threads) t.join();
+    ASSERT_EQ(failures.load(), 0) << "round " << round;
+    EXPECT_EQ(filesIn(parent).size(), std::size_t(kThreads));
+  }
 }
 
 }  // namespace

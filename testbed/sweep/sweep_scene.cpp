@@ -1,23 +1,15 @@
 #include "testbed/sweep/sweep_scene.h"
 
-#include <fstream>
-
 #include <nlohmann/json.hpp>
 
-#include "testbed/core/error.h"
+#include "testbed/io/json_input.h"
 
 namespace testbed {
 
 Scene loadSweepScene(const std::filesystem::path& file, std::optional<int> subdivide) {
   if (!subdivide) return loadScene(file);
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": cannot open the scene file");
-  nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& error) {
-    throw InputError(file.string() + ": not valid JSON (" + std::string(error.what()) + ")");
-  }
+  // The strict reader scenes get (loadScene): caps, regular files only, duplicate keys refused.
+  nlohmann::json document = readJsonInput(file);
   if (document.is_object() && document.contains("objects") && document["objects"].is_array())
     for (auto& object : document["objects"])
       if (object.is_object() && object.contains("mesh")) object["subdivide"] = *subdivide;

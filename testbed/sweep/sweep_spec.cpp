@@ -4,10 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <set>
 
 #include "testbed/core/error.h"
+#include "testbed/io/json_input.h"
 #include "testbed/technique/registry.h"
 
 namespace testbed {
@@ -24,10 +24,7 @@ class SpecReader {
     throw InputError(file_.string() + ": " + (key.empty() ? "" : key + ": ") + what);
   }
 
-  static std::string show(const json& value) {
-    std::string text = value.dump(-1, ' ', false, json::error_handler_t::replace);
-    return text.size() > 40 ? text.substr(0, 37) + "..." : text;
-  }
+  static std::string show(const json& value) { return briefJson(value); }
 
   void keys(const json& object, const std::string& key, const std::set<std::string>& allowed) const {
     if (!object.is_object()) fail(key, "expected an object, got " + show(object));
@@ -42,6 +39,17 @@ class SpecReader {
   std::string text(const json& value, const std::string& key) const {
     if (!value.is_string()) fail(key, "expected a string, got " + show(value));
     return value.get<std::string>();
+  }
+
+  // Text that lands in a cell of the markdown table: a '|' would split the cell and a line
+  // break end the table, so both are refused here rather than the table coming out torn.
+  std::string tableText(const json& value, const std::string& key) const {
+    const std::string t = text(value, key);
+    for (unsigned char c : t)
+      if (c == '|' || c < 0x20 || c == 0x7f)
+        fail(key, std::string(c == '|' ? "'|'" : "a control character (a line break?)") +
+                      " would break the markdown table, got " + show(value));
+    return t;
   }
 
   int integer(const json& value, const std::string& key, int lo, int hi) const {
@@ -101,6 +109,16 @@ class SpecReader {
     return s;
   }
 
+  // Names that become part of output file names: checked here, not when the files are
+  // written after every cell has rendered.
+  void fileNamePart(const std::string& name, const std::string& key) const {
+    if (name.empty() || name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-_") != std::string::npos)
+      fail(key, "expected lower-case letters, digits, '-' or '_' (it names the table's files), got " + show(json(name)));
+    if (name.size() > kMaxSweepNameLength)
+      fail(key, std::to_string(name.size()) + " characters, more than the limit of " + std::to_string(kMaxSweepNameLength) +
+                    " (it names the table's files)");
+  }
+
   void technique(const std::string& id, const std::string& key) const {
     if (id == kGroundTruthId) return;
     try {
@@ -129,17 +147,7 @@ bool SweepRow::measured(std::size_t column) const {
   return std::find(notMeasuredColumns.begin(), notMeasuredColumns.end(), column) == notMeasuredColumns.end();
 }
 
-SweepSpec loadSweepSpec(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": cannot open the sweep spec");
-  json document;
-  try {
-    document = json::parse(in);
-  } catch (const json::parse_error& error) {
-    throw InputError(file.string() + ": not valid JSON (" + std::string(error.what()) + ")");
-  }
-  return parseSweepSpec(document, file);
-}
+SweepSpec loadSweepSpec(const fs::path& file) { return parseSweepSpec(readJsonInput(file, kMaxSweepSpecBytes), file); }
 
 SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneFilesMustExist) {
   const SpecReader r(file);
@@ -151,8 +159,7 @@ SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneF
   for (const char* required : {"name", "citation", "scenes", "columns", "rows"})
     if (!document.contains(required)) r.fail(required, "missing (required)");
   spec.name = r.text(document["name"], "name");
-  if (spec.name.empty() || spec.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789-_") != std::string::npos)
-    r.fail("name", "expected lower-case letters, digits, '-' or '_' (it names the table's files)");
+  r.fileNamePart(spec.name, "name");
   if (spec.name == "records" || spec.name == "sweep" || spec.name == "spec") r.fail("name", "\"" + spec.name + "\" is the name of a sweep output file");
   spec.citation = r.text(document["citation"], "citation");
   if (document.contains("title")) spec.title = r.text(document["title"], "title");
@@ -162,6 +169,7 @@ SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneF
   const json& scenes = document["scenes"];
   if (!scenes.is_object() || scenes.empty()) r.fail("scenes", "expected an object of id: scene file, not empty");
   for (const auto& [id, path] : scenes.items()) {
+    r.fileNamePart(id, "scenes." + id);  // it names the close-up figure's file
     fs::path scene = r.text(path, "scenes." + id);
     if (scene.is_relative()) scene = file.parent_path() / scene;
     if (sceneFilesMustExist && !fs::is_regular_file(scene)) r.fail("scenes." + id, "no such scene file: " + scene.string());
@@ -188,15 +196,20 @@ SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneF
 
   const json& columns = document["columns"];
   if (!columns.is_array() || columns.empty()) r.fail("columns", "expected a non-empty array");
+  if (columns.size() > kMaxSweepColumns)
+    r.fail("columns", std::to_string(columns.size()) + " columns, more than the limit of " + std::to_string(kMaxSweepColumns));
   for (std::size_t i = 0; i < columns.size(); ++i) {
     const std::string key = "columns[" + std::to_string(i) + "]";
     r.keys(columns[i], key, with(kSettingKeys, {"label", "comment"}));
     if (!columns[i].contains("label")) r.fail(key + ".label", "missing (required)");
-    spec.columns.push_back({r.text(columns[i]["label"], key + ".label"), r.settings(columns[i], key, spec)});
+    spec.columns.push_back({r.tableText(columns[i]["label"], key + ".label"), r.settings(columns[i], key, spec)});
   }
 
   const json& rows = document["rows"];
   if (!rows.is_array() || rows.empty()) r.fail("rows", "expected a non-empty array");
+  if (rows.size() > kMaxSweepRows)
+    r.fail("rows", std::to_string(rows.size()) + " rows, more than the limit of " + std::to_string(kMaxSweepRows));
+  std::size_t entries = 0;  // cells the table asks for, before equal ones are merged
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const std::string key = "rows[" + std::to_string(i) + "]";
     const json& row = rows[i];
@@ -204,11 +217,15 @@ SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneF
     for (const char* required : {"label", "techniques", "paper"})
       if (!row.contains(required)) r.fail(key + "." + required, "missing (required)");
     SweepRow parsed;
-    parsed.label = r.text(row["label"], key + ".label");
-    if (row.contains("group")) parsed.group = r.text(row["group"], key + ".group");
+    parsed.label = r.tableText(row["label"], key + ".label");
+    if (row.contains("group")) parsed.group = r.tableText(row["group"], key + ".group");
     if (row.contains("comment")) r.text(row["comment"], key + ".comment");
     const json& techniques = row["techniques"];
     if (!techniques.is_array() || techniques.empty()) r.fail(key + ".techniques", "expected a non-empty array of ids");
+    entries += techniques.size() * spec.columns.size();
+    if (entries > kMaxSweepEntries)
+      r.fail(key + ".techniques", "the table reaches " + std::to_string(entries) + " cells here, more than the limit of " +
+                                      std::to_string(kMaxSweepEntries));
     for (std::size_t t = 0; t < techniques.size(); ++t) {
       const std::string where = key + ".techniques[" + std::to_string(t) + "]";
       parsed.techniques.push_back(r.text(techniques[t], where));
@@ -219,10 +236,15 @@ SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneF
       const json& passes = row["passes"];
       if (!passes.is_array() || passes.empty()) r.fail(key + ".passes", "expected a non-empty array of pass names");
       parsed.passes.emplace();
-      for (std::size_t p = 0; p < passes.size(); ++p)
-        parsed.passes->push_back(r.text(passes[p], key + ".passes[" + std::to_string(p) + "]"));
+      for (std::size_t p = 0; p < passes.size(); ++p) {
+        const std::string where = key + ".passes[" + std::to_string(p) + "]";
+        parsed.passes->push_back(r.text(passes[p], where));
+        // The entry is the sum of the passes: one named twice would count twice.
+        if (std::count(parsed.passes->begin(), parsed.passes->end(), parsed.passes->back()) > 1)
+          r.fail(where, "\"" + parsed.passes->back() + "\" is already in the list");
+      }
     }
-    if (row.contains("not_measured")) parsed.notMeasured = r.text(row["not_measured"], key + ".not_measured");
+    if (row.contains("not_measured")) parsed.notMeasured = r.tableText(row["not_measured"], key + ".not_measured");
     if (row.contains("not_measured_columns")) {
       const json& columns = row["not_measured_columns"];
       if (parsed.notMeasured.empty()) r.fail(key + ".not_measured_columns", "needs \"not_measured\" (the reason)");

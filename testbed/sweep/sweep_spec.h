@@ -4,6 +4,8 @@
 // what is measured, and the paper's own figures beside each row, cited. Read from JSON
 // and validated like scene files: any mistake is one InputError naming the file and key.
 #include <array>
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -15,6 +17,15 @@
 #include "testbed/harness/metric_table.h"
 
 namespace testbed {
+
+// Caps on a spec (docs/input-limits.md): the paper's tables are a few kilobytes and at
+// most a few hundred cells; these leave room for any real table and refuse, before
+// anything is planned or rendered, a spec that would run for months or exhaust memory.
+inline constexpr std::uint64_t kMaxSweepSpecBytes = 1ull << 20;
+inline constexpr std::size_t kMaxSweepColumns = 256;
+inline constexpr std::size_t kMaxSweepRows = 1024;
+inline constexpr std::size_t kMaxSweepEntries = 20000;  // rows × columns × techniques of a row
+inline constexpr std::size_t kMaxSweepNameLength = 64;    // it names the table's files
 
 // The reference that every table can time (the shadow volumes).
 inline constexpr const char* kGroundTruthId = "groundtruth";

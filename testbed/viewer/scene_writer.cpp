@@ -1,9 +1,9 @@
 #include "testbed/viewer/scene_writer.h"
 
-#include <fstream>
 
 #include "testbed/core/error.h"
 #include "testbed/io/image_io.h"
+#include "testbed/io/json_input.h"
 
 namespace testbed::viewer {
 namespace {
@@ -54,13 +54,7 @@ json sceneWithView(json document, const fs::path& source, const fs::path& destin
 }
 
 void saveSceneWithView(const Scene& scene, const fs::path& destination) {
-  std::ifstream in(scene.file, std::ios::binary);
-  json document;
-  try {
-    document = json::parse(in);
-  } catch (const json::exception& error) {
-    throw InputError(scene.file.string() + ": cannot read it back to save the view: " + error.what());
-  }
+  const json document = readJsonInput(scene.file);  // the scene's own file, read as strictly again
   const json written = sceneWithView(document, scene.file, destination, scene.camera, scene.light);
   fs::path folder = destination.parent_path();
   if (folder.empty()) folder = ".";

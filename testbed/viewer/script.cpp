@@ -2,12 +2,12 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <sstream>
 
 #include "testbed/harness/frame_runner.h"
 #include "testbed/core/error.h"
+#include "testbed/io/input_file.h"
 #include "testbed/technique/registry.h"
 
 namespace testbed::viewer {
@@ -159,11 +159,11 @@ std::vector<ScriptAction> parseScript(const std::string& text, const std::string
 }
 
 std::vector<ScriptAction> readScript(const std::filesystem::path& file, const std::string& technique) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError("--script: cannot read " + file.string());
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseScript(text.str(), file.string(), technique);
+  try {
+    return parseScript(readInputFile(file, kMaxScriptBytes), file.string(), technique);
+  } catch (const InputError& error) {
+    throw InputError(std::string("--script ") + error.what());
+  }
 }
 
 }  // namespace testbed::viewer

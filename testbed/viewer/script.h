@@ -2,6 +2,7 @@
 // `testbed view --script FILE`: actions replayed one per frame, one per line (docs/viewer.md
 // "Viewer" documents the format). The whole file is checked before the window opens: a bad
 // line throws InputError("FILE:LINE: ...").
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -37,6 +38,9 @@ struct ScriptAction {
 
 // `technique` is the viewer's technique when the script starts: `set` lines are checked
 // against whichever technique is current at that line, plugins included.
+// Read through input_file.h: a regular file of at most kMaxScriptBytes (a FIFO or
+// /dev/zero is refused at once, not read without end).
+inline constexpr std::uint64_t kMaxScriptBytes = 1ull << 20;
 std::vector<ScriptAction> readScript(const std::filesystem::path& file, const std::string& technique);
 
 // The same from text (for tests); `name` is used in messages.

@@ -87,5 +87,18 @@ TEST(ViewerScript, MissingFileIsAnInputError) {
   EXPECT_THROW(readScript("/nonexistent/script.txt", "sm"), InputError);
 }
 
+// A device or a folder is refused at once, naming it, not read without end.
+TEST(ViewerScript, ADeviceOrAFolderIsRefusedAtOnce) {
+  for (const char* file : {"/dev/zero", "/tmp"}) {
+    SCOPED_TRACE(file);
+    try {
+      readScript(file, "sm");
+      ADD_FAILURE() << "accepted";
+    } catch (const InputError& error) {
+      EXPECT_EQ(std::string(error.what()).rfind(std::string("--script ") + file + ": is a ", 0), 0u) << error.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace testbed::viewer

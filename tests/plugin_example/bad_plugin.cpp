@@ -39,6 +39,10 @@ TechniqueInfo dummyInfo() {
 #if defined(BAD_NO_ENTRY)
 // A shared library, but no testbed_register_plugin.
 extern "C" int bad_plugin_something_else() { return 0; }
+#elif defined(BAD_DATA_ENTRY)
+// Both entry names exported, but as data: calling them would jump into bytes.
+TESTBED_PLUGIN_EXPORT const unsigned char testbed_plugin_api_version[16] = {0xff, 0xff};
+TESTBED_PLUGIN_EXPORT unsigned char testbed_register_plugin[16] = {0xff, 0xff};
 #elif defined(BAD_API_VERSION)
 TESTBED_PLUGIN_EXPORT int testbed_plugin_api_version() { return TESTBED_PLUGIN_API_VERSION + 100; }
 TESTBED_PLUGIN_EXPORT void testbed_register_plugin(PluginRegistrar& registrar) { registrar.add<Dummy>(dummyInfo()); }
