@@ -62,6 +62,8 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
   }
   allocate(in.size);
   shadowMap_.render(in, timer);
+  rbsm_.prepareDepthImage(shadowMap_.depth(), in.size);
+  rbsmPass_.setDefines(rbsm_.libraryDefines());
   {
     auto scope = timer.scope("rbsm-classify");
     const float noReceiver[4] = {0, -1, 0, 0};  // value 0, depth −1: later passes skip it

@@ -18,6 +18,15 @@ void CommonParameters::reflect(ParameterBinder& b) {
   b.choice("debug", debug, DebugView::None,
            {{"none", DebugView::None}, {"discontinuity", DebugView::Discontinuity}, {"onds", DebugView::Onds}},
            "also write T.discontinuity.png (d_c as RGB) or T.onds.png (d_on: x red, y green)");
+  // Same output in every setting (depth_image.h); a speed knob, and auto is tuned to llvmpipe.
+  b.choice("depth_reads", depthReads, DepthImage::Layout::Auto,
+           {{"auto", DepthImage::Layout::Auto},
+            {"texture", DepthImage::Layout::Texture},
+            {"blocks", DepthImage::Layout::Blocks},
+            {"texels", DepthImage::Layout::Texels}},
+           "where the edge walks read stored depths (same output in every setting): texture (no copy), "
+           "blocks (a half-size RGBA32F copy), texels (a full-size R32F copy), or auto (llvmpipe's cheapest "
+           "for the map's texels against the screen's pixels)");
   shadowMap.reflect(b);
 }
 
@@ -30,6 +39,11 @@ void reflectVisibility(ParameterBinder& b, bool& improved) {
 void reflectKernel(ParameterBinder& b, int& kernel) {
   // Odd so the block is centred on the receiver's texel.
   b.integer("kernel", kernel, 3, 1, 31, "filter width k in texels (k×k revectorized taps, odd)").oddOnly();
+}
+
+void Common::prepareDepthImage(const Texture& shadowMap, glm::ivec2 screenSize, bool walkHeavy) {
+  depthImage_.configure(parameters_.depthReads, walkHeavy);
+  depthImage_.prepare({shadowMap.width(), shadowMap.height()}, screenSize);
 }
 
 void Common::bindLibrary(const Program& program, const Texture& shadowMap) const {
@@ -88,12 +102,12 @@ std::vector<std::pair<std::string, ImageF>> Common::debugImages() const {
 void SinglePassBase::configureCommon(const CommonParameters& parameters) {
   shadowMap_.configure(parameters.shadowMap);
   common_.configure(parameters);
-  common_.setDepthLayout(depthLayout());
 }
 
 void SinglePassBase::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
   shadowMap_.render(in, timer);
   renderInputs(shadowMap_.depth(), timer);
+  common_.prepareDepthImage(shadowMap_.depth(), in.size, walkHeavy());
   {
     // Part of the classification's input (depth_image.h), timed with it.
     auto scope = timer.scope("classify");

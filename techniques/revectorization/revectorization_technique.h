@@ -18,12 +18,13 @@ namespace testbed::revectorization {
 
 enum class DebugView { None, Discontinuity, Onds };
 
-// The family's parameters after a technique's own: max_search, epsilon, bias, debug, then
-// the shadow map's.
+// The family's parameters after a technique's own: max_search, epsilon, bias, debug,
+// depth_reads, then the shadow map's.
 struct CommonParameters {
   int maxSearch;
   float epsilon, bias;
   DebugView debug;
+  DepthImage::Layout depthReads;
   ShadowMapPass::Parameters shadowMap;
   void reflect(ParameterBinder& b);
 };
@@ -43,12 +44,13 @@ class Common {
   // image (depth_image.h), which updateDepthImage() must have copied this frame.
   void setLibraryUniforms(const Program& program) const;
   void bindLibrary(const Program& program, const Texture& shadowMap) const;
+  // Settles the frame's depth-image layout (depth_reads; Auto weighs `walkHeavy`, RPCF's
+  // walks) for the map behind the screen: before compiling with libraryDefines().
+  void prepareDepthImage(const Texture& shadowMap, glm::ivec2 screenSize, bool walkHeavy = false);
   // Copies the frame's shadow map into the depth image; callers time it inside their first
   // pass after the shadow map, as part of the technique.
   void updateDepthImage(const Texture& shadowMap) { depthImage_.update(shadowMap); }
-  // The depth image's layout (Blocks unless set), and the defines every program that
-  // includes revectorization.glsl must be compiled with.
-  void setDepthLayout(DepthImage::Layout layout) { depthImage_.setLayout(layout); }
+  // The defines every program that includes revectorization.glsl must be compiled with.
   std::string libraryDefines() const { return depthImage_.defines(); }
   // When a debug view was asked for, draws the light-space one (debug.frag) outside any
   // timed scope and reads it back. `bothSides` false shows entering discontinuities only.
@@ -85,8 +87,9 @@ class SinglePassBase : public ShadowTechnique {
   virtual void setTechniqueUniforms(const Program& program) const = 0;
   // Compile-time settings of the screen pass's shaders.
   virtual std::string shaderDefines() const { return {}; }
-  // The layout of the shadow map's depth image (depth_image.h).
-  virtual DepthImage::Layout depthLayout() const { return DepthImage::Layout::Blocks; }
+  // Whether the walks are RPCF's k×k taps, which Auto's depth-image layout weighs
+  // (depth_image.h).
+  virtual bool walkHeavy() const { return false; }
   // Passes of the technique's own between the shadow map and the screen pass (timed under
   // their own names), and what they made bound to both screen-pass programs.
   virtual void renderInputs(const Texture& /*shadowMap*/, PassTimer& /*timer*/) {}

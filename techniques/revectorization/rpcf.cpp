@@ -28,8 +28,8 @@ class Rpcf : public SinglePassTechnique<P> {
     tiles_.render(shadowMap, this->parameters_.kernel, timer);
   }
   void bindInputs(const Program& program) const final { tiles_.bind(program); }
-  // k×k taps each walking: reads outweigh the dearer copy (depth_image.h).
-  DepthImage::Layout depthLayout() const final { return DepthImage::Layout::Texels; }
+  // k×k taps each walking: their reads pay for a dearer copy (depth_image.h).
+  bool walkHeavy() const final { return this->parameters_.kernel > 1; }
 
   RpcfTiles tiles_;
 };

@@ -23,13 +23,17 @@ namespace {
 class SmsrTwoPass final : public WithParameters<CommonParameters> {
  public:
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {
-    if (!discProgram_) {
-      discProgram_ = Program::graphics("testbed/render/gbuffer.vert",
-                                       "techniques/revectorization/smsr_2pass_discontinuity.frag");
-    }
     // The G-buffer's depth, read only: pass 1 draws where it is equal.
     disc_.ensure({.size = in.size, .color = GL_RGBA8, .borrowedDepth = &in.gbuffer.depth()});
     shadowMap_.render(in, timer);
+    common_.prepareDepthImage(shadowMap_.depth(), in.size);
+    if (!discProgram_ || programDefines_ != common_.libraryDefines()) {
+      programDefines_ = common_.libraryDefines();
+      ondsProgram_ = Program();
+      discProgram_ = Program::graphics("testbed/render/gbuffer.vert",
+                                       "techniques/revectorization/smsr_2pass_discontinuity.frag", programDefines_);
+    }
+    revectorize_.setDefines(common_.libraryDefines());
     {
       auto scope = timer.scope("discontinuity");
       const float clear[4] = {0, 0, 0, 0};  // a = 0: no receiver
@@ -89,7 +93,7 @@ class SmsrTwoPass final : public WithParameters<CommonParameters> {
       case DebugView::Onds:
         if (!ondsProgram_)
           ondsProgram_ = Program::graphics("testbed/render/fullscreen.vert",
-                                           "techniques/revectorization/smsr_2pass_onds.frag");
+                                           "techniques/revectorization/smsr_2pass_onds.frag", programDefines_);
         bindSearchInputs(ondsProgram_, in);
         common_.renderDebugWith(ondsProgram_, in.size);
         return;
@@ -100,6 +104,7 @@ class SmsrTwoPass final : public WithParameters<CommonParameters> {
   ShadowMapPass shadowMap_;
   EdgeSplitPass revectorize_{"techniques/revectorization/smsr_2pass_revectorize.frag"};
   Program discProgram_, ondsProgram_;
+  std::string programDefines_;  // theirs: the library's
   RenderTarget disc_;  // pass 1's screen-space discontinuity map
 };
 
