@@ -53,8 +53,7 @@ class Probe {
     test::sharedContext();
     tiles_.emplace();
     depthImage_.emplace();
-    depthImage_->configure(layout, false);
-    depthImage_->prepare(glm::ivec2(size), glm::ivec2(size));
+    depthImage_->setLayout(layout);
     program_ = Program::compute("techniques/revectorization/probe.comp", depthImage_->defines());
     map_ = Texture::create2D(GL_R32F, size, size);
     map_.setFilter(GL_NEAREST, GL_NEAREST);
@@ -483,7 +482,8 @@ TEST(RevectorizationGlsl, RpcfScreenPassEqualsThePlainLoop) {
 }
 
 // Where the walks read stored depths is a matter of speed only (depth_image.h): the
-// depth texture itself, the 2×2-block image and the per-texel image give every function
+// depth texture itself (the paper path), the 2×2-block image and the per-texel image
+// (the fast path's) give every function
 // the very same numbers, on a map of odd size (the blocks' last row and column are
 // half-filled) and beyond its border.
 TEST(RevectorizationGlsl, EveryDepthLayoutGivesTheSameNumbers) {

@@ -18,15 +18,6 @@ void CommonParameters::reflect(ParameterBinder& b) {
   b.choice("debug", debug, DebugView::None,
            {{"none", DebugView::None}, {"discontinuity", DebugView::Discontinuity}, {"onds", DebugView::Onds}},
            "also write T.discontinuity.png (d_c as RGB) or T.onds.png (d_on: x red, y green)");
-  // Same output in every setting (depth_image.h); a speed knob, and auto is tuned to llvmpipe.
-  b.choice("depth_reads", depthReads, DepthImage::Layout::Auto,
-           {{"auto", DepthImage::Layout::Auto},
-            {"texture", DepthImage::Layout::Texture},
-            {"blocks", DepthImage::Layout::Blocks},
-            {"texels", DepthImage::Layout::Texels}},
-           "where the edge walks read stored depths (same output in every setting): texture (no copy), "
-           "blocks (a half-size RGBA32F copy), texels (a full-size R32F copy), or auto (llvmpipe's cheapest "
-           "for the map's texels against the screen's pixels)");
   shadowMap.reflect(b);
 }
 
@@ -39,11 +30,6 @@ void reflectVisibility(ParameterBinder& b, bool& improved) {
 void reflectKernel(ParameterBinder& b, int& kernel) {
   // Odd so the block is centred on the receiver's texel.
   b.integer("kernel", kernel, 3, 1, 31, "filter width k in texels (k×k revectorized taps, odd)").oddOnly();
-}
-
-void Common::prepareDepthImage(const Texture& shadowMap, glm::ivec2 screenSize, bool walkHeavy) {
-  depthImage_.configure(parameters_.depthReads, walkHeavy);
-  depthImage_.prepare({shadowMap.width(), shadowMap.height()}, screenSize);
 }
 
 void Common::bindLibrary(const Program& program, const Texture& shadowMap) const {
@@ -72,7 +58,10 @@ void Common::renderDebug(const FrameInputs& in, const Texture& shadowMap, bool b
 }
 
 void Common::renderDebugWith(const Program& program, glm::ivec2 size) {
-  debugTarget_.ensure({.size = size, .color = GL_RGBA8});
+  {
+    GpuMemoryLedger::Label label("debug-view", ResourceRole::Device);  // only when a debug view is asked for
+    debugTarget_.ensure({.size = size, .color = GL_RGBA8});
+  }
   const float black[4] = {0, 0, 0, 1};
   glClearNamedFramebufferfv(debugTarget_.framebuffer().id(), GL_COLOR, 0, black);
   screen_.draw(program, debugTarget_.framebuffer(), size);
@@ -106,9 +95,10 @@ void SinglePassBase::configureCommon(const CommonParameters& parameters) {
 
 void SinglePassBase::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
   shadowMap_.render(in, timer);
-  renderInputs(shadowMap_.depth(), timer);
-  common_.prepareDepthImage(shadowMap_.depth(), in.size, walkHeavy());
-  {
+  common_.setPath(in.path, depthLayout());
+  const bool fast = in.path == TechniquePath::Fast;
+  if (fast) {
+    renderFastInputs(shadowMap_.depth(), timer);
     // Part of the classification's input (depth_image.h), timed with it.
     auto scope = timer.scope("classify");
     common_.updateDepthImage(shadowMap_.depth());
@@ -117,7 +107,7 @@ void SinglePassBase::render(const FrameInputs& in, PassTimer& timer, const Visib
     bindReceiverInputs(program, in);
     common_.bindLibrary(program, shadowMap_.depth());
     setTechniqueUniforms(program);
-    bindInputs(program);
+    if (fast) bindFastInputs(program);
   };
   screen_.setDefines(shaderDefines() + common_.libraryDefines());
   screen_.draw(in, out, timer, bind, "classify", "revectorize");

@@ -18,13 +18,12 @@ namespace testbed::revectorization {
 
 enum class DebugView { None, Discontinuity, Onds };
 
-// The family's parameters after a technique's own: max_search, epsilon, bias, debug,
-// depth_reads, then the shadow map's.
+// The family's parameters after a technique's own: max_search, epsilon, bias, debug, then
+// the shadow map's.
 struct CommonParameters {
   int maxSearch;
   float epsilon, bias;
   DebugView debug;
-  DepthImage::Layout depthReads;
   ShadowMapPass::Parameters shadowMap;
   void reflect(ParameterBinder& b);
 };
@@ -44,11 +43,13 @@ class Common {
   // image (depth_image.h), which updateDepthImage() must have copied this frame.
   void setLibraryUniforms(const Program& program) const;
   void bindLibrary(const Program& program, const Texture& shadowMap) const;
-  // Settles the frame's depth-image layout (depth_reads; Auto weighs `walkHeavy`, RPCF's
-  // walks) for the map behind the screen: before compiling with libraryDefines().
-  void prepareDepthImage(const Texture& shadowMap, glm::ivec2 screenSize, bool walkHeavy = false);
-  // Copies the frame's shadow map into the depth image; callers time it inside their first
-  // pass after the shadow map, as part of the technique.
+  // Where the frame's walks read stored depths (depth_image.h): the depth texture on the
+  // paper path, a copy laid out as `fastLayout` on the fast one. Before libraryDefines().
+  void setPath(TechniquePath path, DepthImage::Layout fastLayout = DepthImage::Layout::Blocks) {
+    depthImage_.setLayout(path == TechniquePath::Paper ? DepthImage::Layout::Texture : fastLayout);
+  }
+  // Copies the frame's shadow map into the depth image (nothing on the paper path);
+  // callers time it inside their first pass after the shadow map, as part of the technique.
   void updateDepthImage(const Texture& shadowMap) { depthImage_.update(shadowMap); }
   // The defines every program that includes revectorization.glsl must be compiled with.
   std::string libraryDefines() const { return depthImage_.defines(); }
@@ -73,7 +74,8 @@ class Common {
 };
 
 // The passes of a technique made of the shared shadow map and one screen pass
-// (edge_split_pass.h), timed "classify" (every pixel) and "revectorize" (the edge pixels).
+// (edge_split_pass.h): on the fast path timed "classify" (every pixel, with the depth
+// image's copy) and "revectorize" (the edge pixels), on the paper path "revectorize" alone.
 class SinglePassBase : public ShadowTechnique {
  public:
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) final;
@@ -87,13 +89,13 @@ class SinglePassBase : public ShadowTechnique {
   virtual void setTechniqueUniforms(const Program& program) const = 0;
   // Compile-time settings of the screen pass's shaders.
   virtual std::string shaderDefines() const { return {}; }
-  // Whether the walks are RPCF's k×k taps, which Auto's depth-image layout weighs
-  // (depth_image.h).
-  virtual bool walkHeavy() const { return false; }
-  // Passes of the technique's own between the shadow map and the screen pass (timed under
-  // their own names), and what they made bound to both screen-pass programs.
-  virtual void renderInputs(const Texture& /*shadowMap*/, PassTimer& /*timer*/) {}
-  virtual void bindInputs(const Program& /*program*/) const {}
+  // The fast path's layout of the shadow map's depth image (depth_image.h).
+  virtual DepthImage::Layout depthLayout() const { return DepthImage::Layout::Blocks; }
+  // The fast path's passes of the technique's own between the shadow map and the screen
+  // pass (timed under their own names), and what they made bound to both screen-pass
+  // programs.
+  virtual void renderFastInputs(const Texture& /*shadowMap*/, PassTimer& /*timer*/) {}
+  virtual void bindFastInputs(const Program& /*program*/) const {}
   bool bothSides_;
 
  private:
