@@ -5,6 +5,7 @@
 // as sm (GI 2016 §4.3), smsr-2pass also its discontinuity map.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
