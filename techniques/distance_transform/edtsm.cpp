@@ -27,6 +27,7 @@ void EdtShadowMapping::configured() {
 }
 
 void EdtShadowMapping::allocate(glm::ivec2 size) {
+  GpuMemoryLedger::Label label("edtsm-targets", ResourceRole::Paper);
   hard_.ensure({.size = size, .color = GL_RG32F});
   if (parameters_.reference) seeds_.ensure({.size = size, .color = GL_R8});  // else the EDT tells them
   intensity_.ensure({.size = size, .color = GL_RG32F});
@@ -62,11 +63,14 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
   }
   allocate(in.size);
   shadowMap_.render(in, timer);
+  rbsm_.setPath(in.path);
+  rbsmPass_.setDefines(rbsm_.libraryDefines());
   {
     auto scope = timer.scope("rbsm-classify");
     const float noReceiver[4] = {0, -1, 0, 0};  // value 0, depth −1: later passes skip it
     glClearNamedFramebufferfv(hard_.framebuffer().id(), GL_COLOR, 0, noReceiver);
-    // The shadow map as RBSM's walks read it (techniques/revectorization/depth_image.h).
+    // The shadow map as RBSM's walks read it on the fast path
+    // (techniques/revectorization/depth_image.h).
     rbsm_.updateDepthImage(shadowMap_.depth());
   }
   const auto bindRbsm = [&](const Program& program) {

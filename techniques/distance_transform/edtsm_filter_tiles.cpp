@@ -11,6 +11,7 @@ constexpr GLuint kArguments = 6;  // two indirect dispatches' (x, y, z) ahead of
 void FilterTiles::begin(glm::ivec2 size, GLuint unit) {
   const glm::ivec2 tiles = (size + kTile - 1) / kTile;
   if (tiles != tiles_) {
+    GpuMemoryLedger::Label label("filter-tiles", ResourceRole::Device);
     kinds_ = Texture::create2D(GL_R32UI, tiles.x, tiles.y);
     lists_ = Buffer::create((kArguments + 2 * std::size_t(tiles.x) * std::size_t(tiles.y)) * sizeof(GLuint), nullptr,
                             GL_DYNAMIC_STORAGE_BIT);

@@ -9,6 +9,7 @@ namespace testbed::distance_transform {
 void PenumbraBand::begin(glm::ivec2 size) {
   const glm::ivec2 tiles = (size + kTile - 1) / kTile;
   if (size != size_) {
+    GpuMemoryLedger::Label label("penumbra-band", ResourceRole::Device);
     seeds_ = Texture::create2D(GL_R32UI, tiles.x, tiles.y);
     minDepth_ = Texture::create2D(GL_R32UI, tiles.x, tiles.y);
     runs_ = Buffer::create(std::size_t(tiles.x) * std::size_t(tiles.y + 1) * 4 * sizeof(GLint), nullptr);

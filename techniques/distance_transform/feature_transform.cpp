@@ -23,6 +23,7 @@ void FeatureTransformPass::run(const Texture& seeds, glm::ivec2 size) {
     rowsProgram_ = Program::compute("techniques/distance_transform/feature_transform_rows.comp");
     columnsProgram_ = Program::compute("techniques/distance_transform/feature_transform_columns.comp");
   }
+  GpuMemoryLedger::Label label("edt-scratch", ResourceRole::Paper);
   if (nearest_.width() != size.x || nearest_.height() != size.y) nearest_ = Texture::create2D(GL_RG32I, size.x, size.y);
   // The seeds may have just been written by an image store.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
@@ -52,6 +53,7 @@ void FeatureTransformPass::prepare(glm::ivec2 size) {
   if (size != size_) {
     // Allocated here, not at construction, so they are booked in the ledger current while
     // the technique renders.
+    GpuMemoryLedger::Label label("edt-scratch", ResourceRole::Paper);
     rowNearest_ = Texture::create2D(GL_R32I, size.x, size.y);
     envelope_ = Texture::create2D(GL_RG32I, size.x, size.y);
     size_ = size;

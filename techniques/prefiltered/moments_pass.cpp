@@ -96,6 +96,7 @@ void MomentsPass::render(const FrameInputs& in, PassTimer& timer, const MomentsF
   updateFarTexel(format, params);
   const glm::ivec2 size(in.shadowMapSize);
   // colorLevels 0 = the full chain, booked in the ledger like any other level.
+  GpuMemoryLedger::Label label("moment-map", ResourceRole::Paper);
   if (moments_.ensure({.size = size,
                        .color = format.internalFormat,
                        .colorLevels = parameters_.mips ? 0 : 1,

@@ -27,6 +27,7 @@ void SeparableBlur::ensure(glm::ivec2 size, GLenum format, bool blurred) {
     return;
   }
   const int p = pack(format), l = layers(format);
+  GpuMemoryLedger::Label label("blur-scratch", ResourceRole::Paper);
   // Packed or layered: the same bytes as the plain texture where the width is a multiple
   // of the pack.
   scratch_.ensure({.size = {(size.x + p * l - 1) / (p * l), size.y},

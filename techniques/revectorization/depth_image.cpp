@@ -2,7 +2,20 @@
 
 namespace testbed::revectorization {
 
+std::string DepthImage::defines() const {
+  switch (layout_) {
+    case Layout::Texture: return "#define RV_DEPTH_TEXTURE 1\n";
+    case Layout::Texels: return "#define RV_DEPTH_TEXELS 1\n";
+    case Layout::Blocks: break;
+  }
+  return "";
+}
+
 void DepthImage::update(const Texture& shadowMap) {
+  if (layout_ == Layout::Texture) {
+    image_ = RenderTarget();
+    return;
+  }
   if (!copy_ || copyLayout_ != layout_) {
     copy_ = Program::graphics("testbed/render/fullscreen.vert", "techniques/revectorization/depth_image.frag", defines());
     copyLayout_ = layout_;
@@ -10,7 +23,10 @@ void DepthImage::update(const Texture& shadowMap) {
   const bool texels = layout_ == Layout::Texels;
   const glm::ivec2 size = texels ? glm::ivec2(shadowMap.width(), shadowMap.height())
                                  : glm::ivec2((shadowMap.width() + 1) / 2, (shadowMap.height() + 1) / 2);
-  image_.ensure({.size = size, .color = GLenum(texels ? GL_R32F : GL_RGBA32F)});
+  {
+    GpuMemoryLedger::Label label("depth-image", ResourceRole::Device);
+    image_.ensure({.size = size, .color = GLenum(texels ? GL_R32F : GL_RGBA32F)});
+  }
   glBindTextureUnit(0, shadowMap.id());
   copy_.use();
   copy_.set("uShadowMap", 0);
@@ -21,6 +37,7 @@ void DepthImage::update(const Texture& shadowMap) {
 }
 
 void DepthImage::bind() const {
+  if (layout_ == Layout::Texture) return;
   glBindImageTexture(kUnit, image_.color().id(), 0, GL_FALSE, 0, GL_READ_ONLY,
                      layout_ == Layout::Texels ? GL_R32F : GL_RGBA32F);
 }

@@ -1,14 +1,16 @@
 #pragma once
-// The shadow map's stored depths copied into an image that revectorization.glsl's
-// single-texel reads (the walks of computeRD above all) load with imageLoad. Why a copy:
+// Where revectorization.glsl's single-texel reads (the walks of computeRD above all) find
+// the shadow map's stored depths. The paper path (docs/paths.md) reads the depth texture
+// itself with texelFetch, as the papers do. The fast path copies it into an image first:
 // on llvmpipe an imageLoad costs far fewer instructions than a texelFetch of a depth
 // texture (the edge pass of rpcf-smsr on fence: 195 → 122 M). Why exact: texelFetch and
 // textureGather of the depth texture return the very floats the copy stores, so every
-// test reads the value it read before. The classification's own gathers keep reading the
-// depth texture. The copy belongs to the technique's cost: callers time it inside their
-// first pass after the shadow map. Two layouts, for two balances of copy against reads:
-// - Blocks (the default): RGBA32F at half the map's size, a texel per 2×2 block, drawn
-//   with one gather a block (3.6 M instructions at 512²), a read picking its component;
+// test reads the same value in every layout. The classification's own gathers keep
+// reading the depth texture. The copy belongs to the technique's cost: callers time it
+// inside their first pass after the shadow map. The layouts:
+// - Texture: no copy, texelFetch of the depth texture (the paper path);
+// - Blocks: RGBA32F at half the map's size, a texel per 2×2 block, drawn with one gather
+//   a block (3.6 M instructions at 512²), a read picking its component;
 // - Texels: R32F at the map's size, a fragment per texel (10 M at 512²), a read one load.
 //   RPCF's k×k walks read so much that the cheaper reads pay for the dearer copy.
 #include <string>
@@ -21,25 +23,27 @@ namespace testbed::revectorization {
 
 class DepthImage {
  public:
-  enum class Layout { Blocks, Texels };
+  enum class Layout { Texture, Blocks, Texels };
 
   // revectorization.glsl's uShadowImage; clear of the image units the family's and
   // EDTSM's shaders use otherwise.
   static constexpr GLuint kUnit = 5;
 
   // Copies `shadowMap` (a depth or float texture) into the image, resized to match (booked
-  // in the current GpuMemoryLedger), and binds it.
+  // as the device "depth-image"), and binds it; for Texture, releases any copy instead.
   void update(const Texture& shadowMap);
-  // Binds the image at kUnit for reading.
+  // Binds the image at kUnit for reading (nothing for Texture).
   void bind() const;
-  // The layout, and the defines revectorization.glsl (and depth_image.frag) read it from.
+  // The layout (Blocks unless set), and the defines revectorization.glsl (and
+  // depth_image.frag) read it from.
   void setLayout(Layout layout) { layout_ = layout; }
-  std::string defines() const { return layout_ == Layout::Texels ? "#define RV_DEPTH_TEXELS 1\n" : ""; }
+  Layout layout() const { return layout_; }
+  std::string defines() const;
 
  private:
   Layout layout_ = Layout::Blocks;
   Program copy_;
-  Layout copyLayout_ = Layout::Blocks;  // copy_'s
+  Layout copyLayout_ = Layout::Texture;  // copy_'s
   RenderTarget image_;  // drawn into, read as an image
   ScreenPass screen_;
 };

@@ -7,17 +7,23 @@ void EdgeSplitPass::setDefines(const std::string& defines) {
   defines_ = defines;
   classify_ = Program();
   edges_ = Program();
+  full_ = Program();
 }
 
-void EdgeSplitPass::prepare(const VisibilityTarget& out) {
+void EdgeSplitPass::prepare(const VisibilityTarget& out, TechniquePath path) {
+  if (!empty_) empty_ = VertexArray::create();
+  if (path == TechniquePath::Paper) {
+    if (!full_) full_ = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_, defines_);
+    return;
+  }
   if (!classify_) {
     classify_ = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_,
                                   defines_ + "#define SCREEN_PASS_CLASSIFY 1\n");
     edges_ = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_, defines_ + "#define SCREEN_PASS_MARKED 1\n");
-    empty_ = VertexArray::create();
   }
   // Depth 0 marks an edge pixel, 1 one the classifying draw answered.
   const glm::ivec2 size(out.texture.width(), out.texture.height());
+  GpuMemoryLedger::Label label("edge-marks", ResourceRole::Device);
   target_.ensure({.size = size, .depth = GL_DEPTH_COMPONENT16, .borrowedColor = &out.texture});
 }
 
@@ -33,7 +39,15 @@ void EdgeSplitPass::drawScreen(const Program& program, glm::ivec2 size) const {
 void EdgeSplitPass::draw(const FrameInputs& in, const VisibilityTarget& out, PassTimer& timer,
                          const std::function<void(const Program&)>& bind, const std::string& classifyPass,
                          const std::string& edgePass) {
-  prepare(out);
+  prepare(out, in.path);
+  if (in.path == TechniquePath::Paper) {
+    auto scope = timer.scope(edgePass);
+    glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer.id());
+    glDisable(GL_DEPTH_TEST);
+    bind(full_);
+    drawScreen(full_, in.size);
+    return;
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer().id());
   glEnable(GL_DEPTH_TEST);
   {

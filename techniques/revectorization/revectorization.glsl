@@ -33,12 +33,14 @@ bool rvInsideMap(ivec2 t) {
   return all(greaterThanEqual(t, ivec2(0))) && all(lessThan(t, uShadowMapSize));
 }
 
-// The shadow map's depths as an image (depth_image.h: the same floats, cheaper to read one
-// at a time on llvmpipe), in either of its layouts.
+// The shadow map's depths as depth_image.h lays them out: the texture itself, or an image
+// of the same floats (cheaper to read one at a time on llvmpipe) in either of its layouts.
 // rvStoredDepth(t): the stored depth of texel t (inside the map), the very value that
 // shadowTestTexel's nearest lookup at the texel centre reads.
 const int kRvDepthImageUnit = 5;  // DepthImage::kUnit
-#ifdef RV_DEPTH_TEXELS
+#if defined(RV_DEPTH_TEXTURE)
+float rvStoredDepth(ivec2 t) { return texelFetch(uShadowMap, t, 0).r; }
+#elif defined(RV_DEPTH_TEXELS)
 layout(r32f, binding = kRvDepthImageUnit) uniform readonly image2D uShadowImage;
 float rvStoredDepth(ivec2 t) { return imageLoad(uShadowImage, t).r; }
 #else

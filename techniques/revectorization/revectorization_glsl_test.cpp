@@ -47,11 +47,14 @@ using Shape = std::function<bool(double, double)>;
 
 class Probe {
  public:
-  explicit Probe(int size = kSize) : size_(size) {
+  // `layout`: where rvStoredDepth reads (depth_image.h).
+  explicit Probe(int size = kSize, revectorization::DepthImage::Layout layout = revectorization::DepthImage::Layout::Blocks)
+      : size_(size) {
     test::sharedContext();
     tiles_.emplace();
     depthImage_.emplace();
-    program_ = Program::compute("techniques/revectorization/probe.comp");
+    depthImage_->setLayout(layout);
+    program_ = Program::compute("techniques/revectorization/probe.comp", depthImage_->defines());
     map_ = Texture::create2D(GL_R32F, size, size);
     map_.setFilter(GL_NEAREST, GL_NEAREST);
     map_.setWrap(GL_CLAMP_TO_BORDER, glm::vec4(0.0f));
@@ -476,6 +479,37 @@ TEST(RevectorizationGlsl, RpcfScreenPassEqualsThePlainLoop) {
       EXPECT_EQ(p.run(kRpcfRsmssScreen, points, {.kernel = k}), p.run(kRpcfRsmss, points, {.kernel = k}));
     }
   });
+}
+
+// Where the walks read stored depths is a matter of speed only (depth_image.h): the
+// depth texture itself (the paper path), the 2×2-block image and the per-texel image
+// (the fast path's) give every function
+// the very same numbers, on a map of odd size (the blocks' last row and column are
+// half-filled) and beyond its border.
+TEST(RevectorizationGlsl, EveryDepthLayoutGivesTheSameNumbers) {
+  using Layout = revectorization::DepthImage::Layout;
+  constexpr int kOddSize = 33;
+  static Probe texture(kOddSize, Layout::Texture), blocks(kOddSize, Layout::Blocks), texels(kOddSize, Layout::Texels);
+  std::vector<glm::vec2> points;
+  for (int y = -2 * kPerTexel; y < (kOddSize + 2) * kPerTexel; y += 3)
+    for (int x = -2 * kPerTexel; x < (kOddSize + 2) * kPerTexel; x += 3)
+      points.emplace_back((x + 0.5137f) / kPerTexel, (y + 0.4871f) / kPerTexel);
+  std::vector<Edge> shapes = staircases();
+  shapes.push_back({"checker of 3×2 texels", [](double x, double y) { return (int(x / 3) + int(y / 2)) % 2 == 0; }});
+  for (const auto& shape : shapes) {
+    SCOPED_TRACE(shape.name);
+    for (Probe* p : {&texture, &blocks, &texels}) p->upload(shape.occluded);
+    for (const auto& [function, o] : std::vector<std::pair<Function, Options>>{
+             {kSmsr, {}}, {kSmsr, {.improved = true}}, {kRsmss, {}},
+             {kRpcfSmsr, {.kernel = 3}}, {kRpcfSmsrScreen, {.improved = true, .kernel = 3}},
+             {kRpcfRsmssScreen, {.kernel = 5}}}) {
+      SCOPED_TRACE("function " + std::to_string(int(function)));
+      const auto reference = texture.run(function, points, o);
+      EXPECT_GT(strictlyBetween(reference) + int(std::count(reference.begin(), reference.end(), 0.0f)), 0);
+      EXPECT_EQ(blocks.run(function, points, o), reference);
+      EXPECT_EQ(texels.run(function, points, o), reference);
+    }
+  }
 }
 
 // RPCF with a 1×1 kernel is its base function bit for bit (eqs. 2 and 3).

@@ -58,7 +58,10 @@ void Common::renderDebug(const FrameInputs& in, const Texture& shadowMap, bool b
 }
 
 void Common::renderDebugWith(const Program& program, glm::ivec2 size) {
-  debugTarget_.ensure({.size = size, .color = GL_RGBA8});
+  {
+    GpuMemoryLedger::Label label("debug-view", ResourceRole::Device);  // only when a debug view is asked for
+    debugTarget_.ensure({.size = size, .color = GL_RGBA8});
+  }
   const float black[4] = {0, 0, 0, 1};
   glClearNamedFramebufferfv(debugTarget_.framebuffer().id(), GL_COLOR, 0, black);
   screen_.draw(program, debugTarget_.framebuffer(), size);
@@ -88,13 +91,14 @@ std::vector<std::pair<std::string, ImageF>> Common::debugImages() const {
 void SinglePassBase::configureCommon(const CommonParameters& parameters) {
   shadowMap_.configure(parameters.shadowMap);
   common_.configure(parameters);
-  common_.setDepthLayout(depthLayout());
 }
 
 void SinglePassBase::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
   shadowMap_.render(in, timer);
-  renderInputs(shadowMap_.depth(), timer);
-  {
+  common_.setPath(in.path, depthLayout());
+  const bool fast = in.path == TechniquePath::Fast;
+  if (fast) {
+    renderFastInputs(shadowMap_.depth(), timer);
     // Part of the classification's input (depth_image.h), timed with it.
     auto scope = timer.scope("classify");
     common_.updateDepthImage(shadowMap_.depth());
@@ -103,7 +107,7 @@ void SinglePassBase::render(const FrameInputs& in, PassTimer& timer, const Visib
     bindReceiverInputs(program, in);
     common_.bindLibrary(program, shadowMap_.depth());
     setTechniqueUniforms(program);
-    bindInputs(program);
+    if (fast) bindFastInputs(program);
   };
   screen_.setDefines(shaderDefines() + common_.libraryDefines());
   screen_.draw(in, out, timer, bind, "classify", "revectorize");

@@ -43,12 +43,15 @@ class Common {
   // image (depth_image.h), which updateDepthImage() must have copied this frame.
   void setLibraryUniforms(const Program& program) const;
   void bindLibrary(const Program& program, const Texture& shadowMap) const;
-  // Copies the frame's shadow map into the depth image; callers time it inside their first
-  // pass after the shadow map, as part of the technique.
+  // Where the frame's walks read stored depths (depth_image.h): the depth texture on the
+  // paper path, a copy laid out as `fastLayout` on the fast one. Before libraryDefines().
+  void setPath(TechniquePath path, DepthImage::Layout fastLayout = DepthImage::Layout::Blocks) {
+    depthImage_.setLayout(path == TechniquePath::Paper ? DepthImage::Layout::Texture : fastLayout);
+  }
+  // Copies the frame's shadow map into the depth image (nothing on the paper path);
+  // callers time it inside their first pass after the shadow map, as part of the technique.
   void updateDepthImage(const Texture& shadowMap) { depthImage_.update(shadowMap); }
-  // The depth image's layout (Blocks unless set), and the defines every program that
-  // includes revectorization.glsl must be compiled with.
-  void setDepthLayout(DepthImage::Layout layout) { depthImage_.setLayout(layout); }
+  // The defines every program that includes revectorization.glsl must be compiled with.
   std::string libraryDefines() const { return depthImage_.defines(); }
   // When a debug view was asked for, draws the light-space one (debug.frag) outside any
   // timed scope and reads it back. `bothSides` false shows entering discontinuities only.
@@ -71,7 +74,8 @@ class Common {
 };
 
 // The passes of a technique made of the shared shadow map and one screen pass
-// (edge_split_pass.h), timed "classify" (every pixel) and "revectorize" (the edge pixels).
+// (edge_split_pass.h): on the fast path timed "classify" (every pixel, with the depth
+// image's copy) and "revectorize" (the edge pixels), on the paper path "revectorize" alone.
 class SinglePassBase : public ShadowTechnique {
  public:
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) final;
@@ -85,12 +89,13 @@ class SinglePassBase : public ShadowTechnique {
   virtual void setTechniqueUniforms(const Program& program) const = 0;
   // Compile-time settings of the screen pass's shaders.
   virtual std::string shaderDefines() const { return {}; }
-  // The layout of the shadow map's depth image (depth_image.h).
+  // The fast path's layout of the shadow map's depth image (depth_image.h).
   virtual DepthImage::Layout depthLayout() const { return DepthImage::Layout::Blocks; }
-  // Passes of the technique's own between the shadow map and the screen pass (timed under
-  // their own names), and what they made bound to both screen-pass programs.
-  virtual void renderInputs(const Texture& /*shadowMap*/, PassTimer& /*timer*/) {}
-  virtual void bindInputs(const Program& /*program*/) const {}
+  // The fast path's passes of the technique's own between the shadow map and the screen
+  // pass (timed under their own names), and what they made bound to both screen-pass
+  // programs.
+  virtual void renderFastInputs(const Texture& /*shadowMap*/, PassTimer& /*timer*/) {}
+  virtual void bindFastInputs(const Program& /*program*/) const {}
   bool bothSides_;
 
  private:

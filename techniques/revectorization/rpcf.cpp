@@ -13,8 +13,8 @@ namespace {
 const char* kCitation = "Macedo, Apolinário, Revectorization-Based Shadow Mapping, GI 2016";
 
 // A k×k box of revectorized taps: the kernel is compiled into the screen pass (rpcf.glsl),
-// so its tap loops unroll; the classifying draw reads the tile bounds (rpcf_tiles.h). P
-// holds the kernel as `kernel`.
+// so its tap loops unroll; on the fast path the classifying draw reads the tile bounds
+// (rpcf_tiles.h). P holds the kernel as `kernel`.
 template <class P>
 class Rpcf : public SinglePassTechnique<P> {
  protected:
@@ -24,11 +24,11 @@ class Rpcf : public SinglePassTechnique<P> {
   std::string shaderDefines() const final {
     return "#define RPCF_KERNEL " + std::to_string(this->parameters_.kernel) + "\n";
   }
-  void renderInputs(const Texture& shadowMap, PassTimer& timer) final {
+  void renderFastInputs(const Texture& shadowMap, PassTimer& timer) final {
     tiles_.render(shadowMap, this->parameters_.kernel, timer);
   }
-  void bindInputs(const Program& program) const final { tiles_.bind(program); }
-  // k×k taps each walking: reads outweigh the dearer copy (depth_image.h).
+  void bindFastInputs(const Program& program) const final { tiles_.bind(program); }
+  // k×k taps each walking: their reads pay for a dearer copy (depth_image.h).
   DepthImage::Layout depthLayout() const final { return DepthImage::Layout::Texels; }
 
   RpcfTiles tiles_;

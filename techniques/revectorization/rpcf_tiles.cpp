@@ -17,6 +17,7 @@ void RpcfTiles::render(const Texture& shadowMap, int kernel, PassTimer& timer) {
                                  "#define RPCF_APRON " + std::to_string(kernel / 2) + "\n");
   }
   const glm::ivec2 size((shadowMap.width() + 1) / 2, (shadowMap.height() + 1) / 2);
+  GpuMemoryLedger::Label label("rpcf-tile-bounds", ResourceRole::Device);
   if (target_.ensure({.size = size, .color = GL_RG32F})) target_.color().setFilter(GL_NEAREST, GL_NEAREST);
   auto scope = timer.scope("tile-bounds");
   bindShadowMap(program_, shadowMap);

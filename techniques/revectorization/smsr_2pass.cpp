@@ -25,16 +25,19 @@ class SmsrTwoPass final : public WithParameters<CommonParameters> {
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {
     if (!discProgram_) {
       discProgram_ = Program::graphics("testbed/render/gbuffer.vert",
-                                       "techniques/revectorization/smsr_2pass_discontinuity.frag");
+                                       "techniques/revectorization/smsr_2pass_discontinuity.frag", common_.libraryDefines());
+      revectorize_.setDefines(common_.libraryDefines());
     }
-    // The G-buffer's depth, read only: pass 1 draws where it is equal.
-    disc_.ensure({.size = in.size, .color = GL_RGBA8, .borrowedDepth = &in.gbuffer.depth()});
+    {
+      // The G-buffer's depth, read only: pass 1 draws where it is equal.
+      GpuMemoryLedger::Label label("discontinuity-map", ResourceRole::Paper);
+      disc_.ensure({.size = in.size, .color = GL_RGBA8, .borrowedDepth = &in.gbuffer.depth()});
+    }
     shadowMap_.render(in, timer);
     {
       auto scope = timer.scope("discontinuity");
       const float clear[4] = {0, 0, 0, 0};  // a = 0: no receiver
       glClearNamedFramebufferfv(disc_.framebuffer().id(), GL_COLOR, 0, clear);
-      common_.updateDepthImage(shadowMap_.depth());  // depth_image.h: timed with pass 1
       bindReceiverInputs(discProgram_, in);
       common_.bindLibrary(discProgram_, shadowMap_.depth());
       drawSceneAgain(in);
@@ -53,6 +56,9 @@ class SmsrTwoPass final : public WithParameters<CommonParameters> {
   void configured() override {
     shadowMap_.configure(parameters_.shadowMap);
     common_.configure(parameters_);
+    // Its programs read stored depths by gathers only (rvClassify), never one texel at a
+    // time: no depth image on either path.
+    common_.setPath(TechniquePath::Paper);
   }
 
   // The inputs of smsr_2pass_search.glsl: receivers, shadow map, library, pass 1's map.
@@ -89,7 +95,7 @@ class SmsrTwoPass final : public WithParameters<CommonParameters> {
       case DebugView::Onds:
         if (!ondsProgram_)
           ondsProgram_ = Program::graphics("testbed/render/fullscreen.vert",
-                                           "techniques/revectorization/smsr_2pass_onds.frag");
+                                           "techniques/revectorization/smsr_2pass_onds.frag", common_.libraryDefines());
         bindSearchInputs(ondsProgram_, in);
         common_.renderDebugWith(ondsProgram_, in.size);
         return;

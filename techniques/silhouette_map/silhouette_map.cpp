@@ -64,6 +64,7 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
     }
     const int side = in.shadowMapSize + 1;  // one more than the depth map: see silhouette_map.glsl
     // 16-bit unorm offsets in the texel: 1/65535 of a texel, the notes ask for ≥ fp16.
+    GpuMemoryLedger::Label label("silhouette-map", ResourceRole::Paper);
     silhouettes_.ensure({.size = glm::ivec2(side), .color = GL_RG16});
     if (topologyScene_ != &in.scene || topology_.size() != in.scene.objects.size()) {
       topology_.clear();
@@ -78,7 +79,10 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
     std::size_t edges = 0;
     for (const auto& mesh : topology_) edges += appendSilhouetteEdges(mesh, in.light, endpoints_);
     const std::size_t bytes = endpoints_.size() * sizeof(glm::vec4);
-    if (bytes > edgeBuffer_.bytes()) edgeBuffer_ = Buffer::create(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    if (bytes > edgeBuffer_.bytes()) {
+      GpuMemoryLedger::Label label("silhouette-edges", ResourceRole::Paper);
+      edgeBuffer_ = Buffer::create(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
     if (bytes > 0) glNamedBufferSubData(edgeBuffer_.id(), 0, static_cast<GLsizeiptr>(bytes), endpoints_.data());
 
     glBindFramebuffer(GL_FRAMEBUFFER, silhouettes_.framebuffer().id());
@@ -110,6 +114,7 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
       indices.reserve(6 * kQuadChunkEdges);
       for (std::size_t e = 0; e < kQuadChunkEdges; ++e)
         for (const std::size_t corner : {0, 1, 2, 0, 2, 3}) indices.push_back(static_cast<GLushort>(4 * e + corner));
+      GpuMemoryLedger::Label label("quad-indices", ResourceRole::Device);  // the vertex cache's
       quadIndices_ = Buffer::create(indices.size() * sizeof(GLushort), indices.data());
       glVertexArrayElementBuffer(quadVertexArray_.id(), quadIndices_.id());
     }

@@ -68,7 +68,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
   options->common.addTo(*command);
 
   return {command, [command, options]() {
-    options->common.settings();  // checks --out and the text options before anything runs
+    const std::optional<TechniquePath> path = options->common.settings().path;  // checks the text options before anything runs
     // Options given on the command line override every level of the spec.
     SweepOverrides overrides;
     if (command->count("--size")) overrides.size = options->common.size;
@@ -124,7 +124,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
     for (const auto& key : frames) {
       const SweepCell& first = plan.cells[owned[key].front()];
       const Scene& scene = scenes.at(first.scene + "|" + (first.subdivide ? std::to_string(*first.subdivide) : "-"));
-      FrameRunner runner(scene, {parseSize(first.size), first.shadowMap, parseDepthFormat(first.depthFormat), plan.repeat});
+      FrameRunner runner(scene, {parseSize(first.size), first.shadowMap, parseDepthFormat(first.depthFormat), plan.repeat, path});
       auto save = [&](std::size_t cell, const TechniqueRun& run, Record record) {
         record.cell = cell;
         if (shard.owns(cell)) records.push_back(record);

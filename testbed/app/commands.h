@@ -25,6 +25,7 @@ struct CommonOptions {
   std::string depthFormat = "16";
   std::string backend = "osmesa";
   int repeat = 1;
+  std::string path;  // --path: "paper", "fast", or empty for the renderer's default
   std::string out;
   std::vector<std::string> plugins;  // --plugin, loaded before any technique lookup
 

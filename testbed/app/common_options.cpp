@@ -11,6 +11,9 @@ void CommonOptions::addTo(CLI::App& command) {
   command.add_option("--depth-format", depthFormat, "shadow map depth: 16, 24 or 32f")->capture_default_str();
   command.add_option("--backend", backend, "GL context: osmesa or egl")->capture_default_str();
   command.add_option("--repeat", repeat, "timed frames after one warm-up frame (medians)")->capture_default_str();
+  command.add_option("--path", path,
+                     "paper (each technique's paper passes and resources) or fast (plus the software "
+                     "rasterizer's devices; same output); default: fast on llvmpipe/softpipe, paper on a GPU");
   addOutOption(command, out);
   addPluginOption(command, plugins);
 }
@@ -58,6 +61,10 @@ RenderSettings CommonOptions::settings() const {
   s.shadowMapSize = shadowMap;
   s.depthFormat = parseDepthFormat(depthFormat);
   s.repeat = repeat;
+  if (!path.empty()) {
+    s.path = parsePath(path);
+    if (!s.path) throw InputError("--path: expected paper or fast, got '" + path + "'");
+  }
   return s;
 }
 

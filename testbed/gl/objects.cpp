@@ -14,6 +14,7 @@ namespace testbed {
 namespace {
 
 thread_local GpuMemoryLedger* t_currentLedger = nullptr;
+thread_local const GpuMemoryLedger::Label* t_currentLabel = nullptr;
 std::atomic<std::uint64_t> g_processBytes{0};
 
 // One new name from glCreateBuffers, glCreateFramebuffers or glCreateVertexArrays.
@@ -32,28 +33,70 @@ GpuMemoryLedger::Scope::~Scope() { t_currentLedger = previous_; }
 GpuMemoryLedger* GpuMemoryLedger::current() { return t_currentLedger; }
 std::uint64_t GpuMemoryLedger::processBytes() { return g_processBytes.load(); }
 
-std::uint32_t bytesPerTexel(GLenum format) {
-  switch (format) {
-    case GL_R8: return 1;
-    case GL_RG8: case GL_R16: case GL_R16F: case GL_DEPTH_COMPONENT16: return 2;
-    case GL_RGBA8: case GL_RG16: case GL_RG16F: case GL_R32F: case GL_R32UI: case GL_R32I:
-    case GL_RGB10_A2: case GL_R11F_G11F_B10F:
-    case GL_DEPTH_COMPONENT24: case GL_DEPTH_COMPONENT32F: case GL_DEPTH24_STENCIL8: return 4;
-    case GL_RGBA16: case GL_RGBA16F: case GL_RG32F: case GL_RG32UI: case GL_RG32I:
-    case GL_DEPTH32F_STENCIL8: return 8;
-    case GL_RGBA32F: case GL_RGBA32UI: case GL_RGBA32I: return 16;
-    default: throw GlError("bytesPerTexel: unsupported internal format " + std::to_string(format));
-  }
+namespace {
+
+struct FormatInfo {
+  GLenum format;
+  std::string_view name;
+  std::uint32_t bytes;  // per texel
+};
+
+const FormatInfo& formatInfo(GLenum format) {
+  static constexpr FormatInfo kFormats[] = {
+      {GL_R8, "R8", 1}, {GL_RG8, "RG8", 2}, {GL_R16, "R16", 2}, {GL_R16F, "R16F", 2},
+      {GL_DEPTH_COMPONENT16, "DEPTH_COMPONENT16", 2}, {GL_RGBA8, "RGBA8", 4}, {GL_RG16, "RG16", 4},
+      {GL_RG16F, "RG16F", 4}, {GL_R32F, "R32F", 4}, {GL_R32UI, "R32UI", 4}, {GL_R32I, "R32I", 4},
+      {GL_RGB10_A2, "RGB10_A2", 4}, {GL_R11F_G11F_B10F, "R11F_G11F_B10F", 4},
+      {GL_DEPTH_COMPONENT24, "DEPTH_COMPONENT24", 4}, {GL_DEPTH_COMPONENT32F, "DEPTH_COMPONENT32F", 4},
+      {GL_DEPTH24_STENCIL8, "DEPTH24_STENCIL8", 4}, {GL_RGBA16, "RGBA16", 8}, {GL_RGBA16F, "RGBA16F", 8},
+      {GL_RG32F, "RG32F", 8}, {GL_RG32UI, "RG32UI", 8}, {GL_RG32I, "RG32I", 8},
+      {GL_DEPTH32F_STENCIL8, "DEPTH32F_STENCIL8", 8}, {GL_RGBA32F, "RGBA32F", 16}, {GL_RGBA32UI, "RGBA32UI", 16},
+      {GL_RGBA32I, "RGBA32I", 16}};
+  for (const FormatInfo& info : kFormats)
+    if (info.format == format) return info;
+  throw GlError("unsupported internal format " + std::to_string(format));
 }
 
-GlObject::GlObject(GLuint id, std::uint64_t bytes, Deleter deleter)
-    : id_(id), bytes_(bytes), deleter_(deleter), ledger_(t_currentLedger) {
-  if (ledger_) ledger_->add(static_cast<std::int64_t>(bytes_));
+}  // namespace
+
+std::string_view roleName(ResourceRole role) { return role == ResourceRole::Paper ? "paper" : "device"; }
+
+std::vector<GpuMemoryLedger::Resource> GpuMemoryLedger::resources() const {
+  std::vector<Resource> out;
+  for (const auto& [key, bytes] : resources_)
+    out.push_back({std::get<0>(key), std::get<1>(key), std::get<2>(key), bytes});
+  return out;
+}
+
+void GpuMemoryLedger::add(const Resource& resource, std::int64_t delta) {
+  bytes_ += static_cast<std::uint64_t>(delta);
+  const auto key = std::make_tuple(resource.name, resource.format, resource.role);
+  if ((resources_[key] += static_cast<std::uint64_t>(delta)) == 0) resources_.erase(key);
+}
+
+GpuMemoryLedger::Label::Label(std::string name, ResourceRole role)
+    : name_(std::move(name)), role_(role), previous_(t_currentLabel) {
+  t_currentLabel = this;
+}
+GpuMemoryLedger::Label::~Label() { t_currentLabel = previous_; }
+
+// 24-bit depth is padded to 32 bits by every driver we know, so it counts 4.
+std::uint32_t bytesPerTexel(GLenum format) { return formatInfo(format).bytes; }
+std::string_view formatName(GLenum format) { return formatInfo(format).name; }
+
+GlObject::GlObject(GLuint id, std::uint64_t bytes, Deleter deleter, std::string_view format)
+    : id_(id), bytes_(bytes), deleter_(deleter), ledger_(bytes > 0 ? t_currentLedger : nullptr) {
+  if (ledger_) {
+    resource_ = {t_currentLabel ? t_currentLabel->name_ : "unnamed", std::string(format),
+                 t_currentLabel ? t_currentLabel->role_ : ResourceRole::Paper, 0};
+    ledger_->add(resource_, static_cast<std::int64_t>(bytes_));
+  }
   g_processBytes += bytes_;
 }
 
 GlObject::GlObject(GlObject&& other) noexcept
-    : id_(other.id_), bytes_(other.bytes_), deleter_(other.deleter_), ledger_(other.ledger_) {
+    : id_(other.id_), bytes_(other.bytes_), deleter_(other.deleter_), ledger_(other.ledger_),
+      resource_(std::move(other.resource_)) {
   other.id_ = 0;
   other.bytes_ = 0;
   other.ledger_ = nullptr;
@@ -66,6 +109,7 @@ GlObject& GlObject::operator=(GlObject&& other) noexcept {
     bytes_ = other.bytes_;
     deleter_ = other.deleter_;
     ledger_ = other.ledger_;
+    resource_ = std::move(other.resource_);
     other.id_ = 0;
     other.bytes_ = 0;
     other.ledger_ = nullptr;
@@ -77,7 +121,7 @@ GlObject::~GlObject() { release(); }
 
 void GlObject::release() {
   if (id_ != 0 && deleter_) deleter_(id_);
-  if (ledger_) ledger_->add(-static_cast<std::int64_t>(bytes_));
+  if (ledger_) ledger_->add(resource_, -static_cast<std::int64_t>(bytes_));
   g_processBytes -= bytes_;
   id_ = 0;
   bytes_ = 0;
@@ -87,7 +131,7 @@ void GlObject::release() {
 // --- Texture ---------------------------------------------------------------------------
 
 Texture::Texture(GLuint id, std::uint64_t bytes, GLenum format, int width, int height, int levels)
-    : GlObject(id, bytes, [](GLuint name) { glDeleteTextures(1, &name); }),
+    : GlObject(id, bytes, [](GLuint name) { glDeleteTextures(1, &name); }, formatName(format)),
       format_(format), width_(width), height_(height), levels_(levels) {}
 
 Texture Texture::create2D(GLenum internalFormat, int width, int height, int levels) {
@@ -153,7 +197,7 @@ std::vector<float> Texture::readFloats(int components) const {
 // --- Buffer, Framebuffer, VertexArray --------------------------------------------------
 
 Buffer::Buffer(GLuint id, std::uint64_t bytes)
-    : GlObject(id, bytes, [](GLuint name) { glDeleteBuffers(1, &name); }) {}
+    : GlObject(id, bytes, [](GLuint name) { glDeleteBuffers(1, &name); }, "buffer") {}
 
 Buffer Buffer::create(std::size_t bytes, const void* data, GLbitfield flags) {
   const GLuint id = createName(glCreateBuffers);

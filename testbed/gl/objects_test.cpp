@@ -57,6 +57,38 @@ TEST_F(GlObjects, LedgerBooksTrueSizesAndReleasesThem) {
   EXPECT_EQ(GpuMemoryLedger::processBytes(), before);
 }
 
+// The split names each object by the Label current at its allocation and its format;
+// objects of one name, format and role add up, and leave the split when released.
+TEST_F(GlObjects, LedgerSplitsItsBytesByLabelledResource) {
+  using Resource = GpuMemoryLedger::Resource;
+  GpuMemoryLedger ledger;
+  GpuMemoryLedger::Scope scope(ledger);
+  Texture unnamed = Texture::create2D(GL_R8, 4, 4);
+  std::vector<Texture> copies;
+  {
+    GpuMemoryLedger::Label label("depth-image", ResourceRole::Device);
+    copies.push_back(Texture::create2D(GL_RGBA32F, 2, 2));
+    copies.push_back(Texture::create2D(GL_RGBA32F, 2, 2));
+    {
+      GpuMemoryLedger::Label inner("shadow-map", ResourceRole::Paper);
+      copies.push_back(Texture::create2D(GL_DEPTH_COMPONENT16, 8, 8));
+    }
+    Buffer buffer = Buffer::create(10, nullptr);
+    EXPECT_EQ(ledger.resources(),
+              (std::vector<Resource>{{"depth-image", "RGBA32F", ResourceRole::Device, 128},
+                                     {"depth-image", "buffer", ResourceRole::Device, 10},
+                                     {"shadow-map", "DEPTH_COMPONENT16", ResourceRole::Paper, 128},
+                                     {"unnamed", "R8", ResourceRole::Paper, 16}}));
+  }
+  copies.erase(copies.begin());
+  EXPECT_EQ(ledger.resources().front(), (Resource{"depth-image", "RGBA32F", ResourceRole::Device, 64}));
+  copies.clear();
+  EXPECT_EQ(ledger.resources(), (std::vector<Resource>{{"unnamed", "R8", ResourceRole::Paper, 16}}));
+  EXPECT_EQ(ledger.bytes(), 16u);
+  EXPECT_EQ(formatName(GL_RG32F), "RG32F");
+  EXPECT_EQ(roleName(ResourceRole::Device), "device");
+}
+
 TEST_F(GlObjects, ObjectsOutsideAScopeAreNotBooked) {
   GpuMemoryLedger ledger;
   Texture texture;

@@ -48,8 +48,14 @@ void validateSettings(const RenderSettings& s) {
     throw InputError("--repeat: " + std::to_string(s.repeat) + " is outside 1.." + std::to_string(kMaxRepeat));
 }
 
+TechniquePath defaultPath(std::string_view renderer) {
+  return isSoftwareRasterizer(renderer) ? TechniquePath::Fast : TechniquePath::Paper;
+}
+
 FrameRunner::FrameRunner(const Scene& scene, const RenderSettings& settings)
-    : scene_(scene), settings_(settings), light_(fittedLightTransforms(scene)), geometry_(scene),
+    : scene_(scene), settings_(settings),
+      path_(settings.path.value_or(defaultPath(reinterpret_cast<const char*>(glGetString(GL_RENDERER))))),
+      light_(fittedLightTransforms(scene)), geometry_(scene),
       gbuffer_(settings.size) {
   renderGBuffer();
 }
@@ -73,7 +79,7 @@ FrameRunner::~FrameRunner() = default;
 FrameInputs FrameRunner::inputs() const {
   return FrameInputs{scene_, geometry_, gbuffer_, settings_.size,
                      cameraTransforms(scene_.camera, aspectOf(settings_.size)),
-                     light_, settings_.shadowMapSize, settings_.depthFormat};
+                     light_, settings_.shadowMapSize, settings_.depthFormat, path_};
 }
 
 TechniqueSession::TechniqueSession(FrameRunner& runner, const RegisteredTechnique& technique,
@@ -132,6 +138,7 @@ TechniqueRun FrameRunner::run(const RegisteredTechnique& technique, const Parame
   result.times = medianPassTimes(times);
   result.cpuMs = median(cpu);
   result.memoryBytes = session.memoryBytes();
+  result.memory = session.memory();
   result.visibility = session.visibility();
   result.debugImages = session.technique().debugImages();
   return result;

@@ -4,6 +4,8 @@
 // becomes on disk is harness/record.h; how frames are timed, harness/timing.h.
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <string_view>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,7 +30,12 @@ struct RenderSettings {
   int shadowMapSize = 1024;
   DepthFormat depthFormat = DepthFormat::D16;
   int repeat = 1;  // timed frames after the warm-up frame; times are medians (timing.h)
+  std::optional<TechniquePath> path;  // none: defaultPath of the context's renderer
 };
+
+// The path a run takes unless told (docs/paths.md): `fast` on a software rasterizer, whose
+// devices it was made for, `paper` on a GPU.
+TechniquePath defaultPath(std::string_view renderer);
 
 // Upper bounds that keep a typo (--size 100000x100000) from exhausting the machine.
 inline constexpr int kMaxScreenSide = 8192;
@@ -46,6 +53,7 @@ struct TechniqueRun {
   PassTimes times;           // medians over the timed frames (medianPassTimes)
   double cpuMs = 0;          // median wall time of a frame, glFinish to glFinish
   std::uint64_t memoryBytes = 0;
+  std::vector<GpuMemoryLedger::Resource> memory;  // memoryBytes split by resource
   std::vector<std::pair<std::string, ImageF>> debugImages;  // ShadowTechnique::debugImages()
 };
 
@@ -64,6 +72,7 @@ class TechniqueSession {
   };
   Frame renderFrame();
   std::uint64_t memoryBytes() const { return ledger_.bytes(); }
+  std::vector<GpuMemoryLedger::Resource> memory() const { return ledger_.resources(); }
   // Reads the last frame's visibility: one channel, top-down, NaN where no receiver.
   ImageF visibility() const;
   const ShadowTechnique& technique() const { return *instance_; }
@@ -98,6 +107,8 @@ class FrameRunner {
 
   const Scene& scene() const { return scene_; }
   const RenderSettings& settings() const { return settings_; }
+  // The run's path: the settings' or, without one, defaultPath of the context's renderer.
+  TechniquePath path() const { return path_; }
   const PassTimes& gbufferTimes() const { return gbufferTimes_; }
   // The light's transforms every technique renders with (fitted, scene/light_fit.h).
   const LightTransforms& light() const { return light_; }
@@ -111,6 +122,7 @@ class FrameRunner {
 
   const Scene& scene_;
   RenderSettings settings_;
+  TechniquePath path_;
   LightTransforms light_;
   GpuScene geometry_;
   GBuffer gbuffer_;

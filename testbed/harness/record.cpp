@@ -96,6 +96,26 @@ PassesRecord readPasses(const Reader& times) {
   return out;  // totalMs: the metric table's
 }
 
+json memoryJson(const std::vector<GpuMemoryLedger::Resource>& resources) {
+  json out = json::array();
+  for (const auto& m : resources)
+    out.push_back({{"name", m.name}, {"format", m.format}, {"bytes", m.bytes}, {"role", std::string(roleName(m.role))}});
+  return out;
+}
+
+std::vector<GpuMemoryLedger::Resource> readMemory(const Reader& memory) {
+  if (!memory.value.is_array()) memory.fail("expected an array of resources");
+  std::vector<GpuMemoryLedger::Resource> out;
+  for (std::size_t i = 0; i < memory.value.size(); ++i) {
+    const Reader r{memory.value[i], memory.path + "[" + std::to_string(i) + "]"};
+    const std::string role = r["role"].text();
+    if (role != "paper" && role != "device") r["role"].fail("expected \"paper\" or \"device\"");
+    out.push_back({r["name"].text(), r["format"].text(), role == "paper" ? ResourceRole::Paper : ResourceRole::Device,
+                   r["bytes"].count()});
+  }
+  return out;
+}
+
 LightRecord readLight(const Reader& r) {
   LightRecord l;
   l.type = r["type"].text();
@@ -139,6 +159,11 @@ Record read(const Reader& r) {
   const Reader error = r["error"];
   if (!error.value.is_null() && !error.value.is_object()) error.fail("expected an object or null");
   if (r.has("cell")) out.cell = std::size_t(r["cell"].count());
+  if (r.has("path")) {
+    out.path = parsePath(r["path"].text());
+    if (!out.path) r["path"].fail("expected \"paper\" or \"fast\"");
+  }
+  if (r.has("memory")) out.memory = readMemory(r["memory"]);
   for (const Metric& m : metricTable()) {
     if (m.path.empty() || (inErrorBlock(m) && error.value.is_null())) continue;
     const Reader value = follow(r, m.path);
@@ -146,6 +171,10 @@ Record read(const Reader& r) {
     m.store(out, m.integer ? double(value.count()) : value.magnitude());
   }
   if (!error.value.is_null() && !out.error) out.error.emplace();  // an error block of no metric: impossible today
+  std::uint64_t split = 0;
+  for (const auto& m : out.memory.value_or(std::vector<GpuMemoryLedger::Resource>{})) split += m.bytes;
+  if (out.memory && split != out.memoryBytes)
+    r["memory"].fail("its bytes sum to " + std::to_string(split) + ", memory_bytes is " + std::to_string(out.memoryBytes));
   return out;
 }
 
@@ -173,6 +202,8 @@ Record makeRecord(const TechniqueRun& run, const FrameRunner& runner, const std:
   r.repeat = s.repeat;
   r.triangles = runner.triangleCount();
   r.memoryBytes = run.memoryBytes;
+  r.memory = run.memory;
+  r.path = runner.path();
   r.light = lightSetupRecord(runner.light(), s.shadowMapSize, s.depthFormat, run.params);
   r.backend = backend;
   return r;
@@ -233,6 +264,8 @@ void to_json(json& out, const Record& r) {
          {"backend", r.backend},
          {"error", nullptr}};
   if (r.cell) out["cell"] = *r.cell;
+  if (r.path) out["path"] = std::string(pathName(*r.path));
+  if (r.memory) out["memory"] = memoryJson(*r.memory);
   for (const Metric& m : metricTable()) {
     if (m.path.empty() || (inErrorBlock(m) && !r.error)) continue;
     const std::optional<double> v = m.value(r, nullptr);

@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -35,6 +36,10 @@ struct Record {
   double cpuMs = 0, gbufferMs = 0;
   int repeat = 1;
   std::uint64_t triangles = 0, memoryBytes = 0;
+  // The run's path ("path": docs/paths.md) and memoryBytes split by resource ("memory":
+  // name, format, bytes, role); none in records written before either existed.
+  std::optional<TechniquePath> path;
+  std::optional<std::vector<GpuMemoryLedger::Resource>> memory;
   LightRecord light;
   std::string backend;
   std::optional<ErrorMetrics> error;  // null until compared with the ground truth

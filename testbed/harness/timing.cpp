@@ -4,10 +4,14 @@
 
 namespace testbed {
 
-TimingSource timingSourceFor(std::string_view backend) {
+bool isSoftwareRasterizer(std::string_view renderer) {
   for (const char* software : {"llvmpipe", "softpipe", "swrast"})
-    if (backend.find(software) != std::string_view::npos) return TimingSource::Wall;
-  return TimingSource::Gpu;
+    if (renderer.find(software) != std::string_view::npos) return true;
+  return false;
+}
+
+TimingSource timingSourceFor(std::string_view backend) {
+  return isSoftwareRasterizer(backend) ? TimingSource::Wall : TimingSource::Gpu;
 }
 
 std::string_view timingName(TimingSource source) { return source == TimingSource::Wall ? "wall" : "gpu"; }

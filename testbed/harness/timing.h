@@ -11,6 +11,9 @@ namespace testbed {
 // a GPU; wall time between glFinish calls on a software rasterizer (llvmpipe, softpipe),
 // whose queries miss the vertex work it does at draw time (see gl/pass_timer.h).
 enum class TimingSource { Gpu, Wall };
+// Whether a renderer (GL_RENDERER, or a context's description holding it) is a software
+// rasterizer: llvmpipe, softpipe or swrast.
+bool isSoftwareRasterizer(std::string_view renderer);
 TimingSource timingSourceFor(std::string_view backendDescription);
 // "gpu" or "wall", as a record's "timing" names it.
 std::string_view timingName(TimingSource source);

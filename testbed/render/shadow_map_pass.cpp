@@ -35,6 +35,7 @@ float polygonOffsetUnits(DepthFormat format, float units16) {
 
 void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
   const GLenum format = depthInternalFormat(in.depthFormat);
+  GpuMemoryLedger::Label label("shadow-map", ResourceRole::Paper);
   // Border depth 0: every lookup outside the map reads shadow (testbed/glsl/receiver.glsl).
   if (target_.ensure({.size = glm::ivec2(in.shadowMapSize), .depth = format}))
     target_.depth().setWrap(GL_CLAMP_TO_BORDER, glm::vec4(0.0f));

@@ -18,6 +18,7 @@
 #include "testbed/scene/view.h"
 #include "testbed/technique/parameter_binder.h"
 #include "testbed/technique/parameters.h"
+#include "testbed/technique/path.h"
 
 namespace testbed {
 
@@ -46,6 +47,9 @@ struct FrameInputs {
   LightTransforms light;
   int shadowMapSize = 1024;
   DepthFormat depthFormat = DepthFormat::D16;
+  // The run's path (path.h): a technique whose paper structure differs from its fast one
+  // renders the one asked for, with the same visibility.
+  TechniquePath path = TechniquePath::Paper;
 };
 
 // Where the technique writes its visibility: an R32F texture of the screen's size with a
