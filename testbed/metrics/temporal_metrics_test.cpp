@@ -194,6 +194,45 @@ TEST(TemporalMetrics, ToleranceIsInPixelFootprints) {
   }
 }
 
+// A perspective camera (90 degrees, 32x32) at height h looking straight down, panning one
+// pixel footprint f = h / 16 of the floor per frame. Frame 0's pixel (20,10) saw an occluder
+// at h / 2 (8 footprints above the floor: dropped), its pixel (5,5) a bump at 0.05 h (under
+// one and a half footprints along the ray: kept). The footprint follows the depth, so the
+// same pixels pass at h = 1 and h = 100.
+TEST(TemporalMetrics, PerspectiveFootprintFollowsDepth) {
+  constexpr int n = 32;
+  for (const float h : {1.f, 100.f}) {
+    SCOPED_TRACE(h);
+    const float f = h / 16;
+    auto viewProjection = [&](int k) {
+      const glm::vec3 eye(float(k) * f, 0, h);
+      return glm::perspective(glm::radians(90.f), 1.f, 0.01f * h, 10 * h) *
+             glm::lookAt(eye, eye - glm::vec3(0, 0, h), glm::vec3(0, 1, 0));
+    };
+    auto positions = [&](int k, const std::map<std::pair<int, int>, float>& raised) {
+      ImageF image{n, n, 4, {}};
+      const glm::vec3 eye(float(k) * f, 0, h);
+      for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+          const glm::vec3 floor = eye + h * glm::vec3((float(x) + 0.5f) / n * 2 - 1, 1 - (float(y) + 0.5f) / n * 2, -1);
+          const auto it = raised.find({x, y});
+          const glm::vec3 p = it == raised.end() ? floor : eye + (1 - it->second) * (floor - eye);
+          image.pixels.insert(image.pixels.end(), {p.x, p.y, p.z, 1.f});
+        }
+      return image;
+    };
+    const ImageF lit = makeImage(n, n, [](int, int) { return 1.f; });
+    TemporalAccumulator accumulator;
+    accumulator.addFrame({.frame = 0, .visibility = lit, .groundTruth = lit,
+                          .positions = positions(0, {{{20, 10}, 0.5f}, {{5, 5}, 0.05f}}),
+                          .viewProjection = viewProjection(0)});
+    const auto pair = accumulator.addFrame({.frame = 1, .visibility = lit, .groundTruth = lit,
+                                            .positions = positions(1, {}), .viewProjection = viewProjection(1)});
+    ASSERT_TRUE(pair);
+    EXPECT_EQ(pair->stablePairs, std::size_t((n - 1) * n - 1));  // last column off screen, (19,10) disoccluded
+  }
+}
+
 TEST(TemporalMetrics, BadInputsThrowAndAreNotAdded) {
   const ImageF g = sweepingEdge(0), p = flatPositions(12, 8);
   TemporalAccumulator accumulator;
