@@ -19,6 +19,7 @@ using namespace testbed::test;
 const std::vector<std::string> kSmall = {"--size", "96x64", "--shadow-map", "128"};
 
 fs::path bundled(const std::string& name) { return fs::path(TESTBED_SOURCE_DIR) / "scenes" / name; }
+fs::path animated(const std::string& name) { return bundled("motion/" + name); }
 
 json readJson(const fs::path& file) { return json::parse(readFile(file)); }
 
@@ -34,7 +35,7 @@ void expectTemporalZero(const json& sequence) {
 TEST(MotionCli, CompareWritesSequenceOutputsAndGroundTruthReadsZero) {
   TempDir tmp;
   const fs::path out = tmp / "out";
-  const RunResult run = runTestbed(with({"compare", "--scene", bundled("spinning_occluder.json").string(),
+  const RunResult run = runTestbed(with({"compare", "--scene", animated("spinning_occluder.json").string(),
                                          "--techniques", "sm", "--frames", "0:4:2", "--out", out.string()},
                                         kSmall));
   ASSERT_EQ(run.exitCode, 0) << run.describe();
@@ -65,7 +66,7 @@ TEST(MotionCli, CompareWritesSequenceOutputsAndGroundTruthReadsZero) {
 
 TEST(MotionCli, NothingMovingReadsZeroFlickerAndCrawl) {
   TempDir tmp;
-  json scene = readJson(bundled("spinning_occluder.json"));
+  json scene = readJson(animated("spinning_occluder.json"));
   scene["animation"] = {{"frames", 3}};  // frames, but every part static
   const fs::path file = writeFile(tmp / "still.json", scene.dump());
   const fs::path out = tmp / "out";
@@ -80,7 +81,7 @@ TEST(MotionCli, NothingMovingReadsZeroFlickerAndCrawl) {
 TEST(MotionCli, RenderWritesASequenceWithoutTemporalFigures) {
   TempDir tmp;
   const fs::path out = tmp / "out";
-  const RunResult run = runTestbed(with({"render", "--scene", bundled("fence_dolly.json").string(), "--technique",
+  const RunResult run = runTestbed(with({"render", "--scene", animated("fence_dolly.json").string(), "--technique",
                                          "sm", "--frames", "46:47", "--out", out.string()},
                                         kSmall));
   ASSERT_EQ(run.exitCode, 0) << run.describe();
@@ -92,20 +93,20 @@ TEST(MotionCli, RenderWritesASequenceWithoutTemporalFigures) {
 
 TEST(MotionCli, BadFramesAndBadAnimationBlocksAreRefused) {
   TempDir tmp;
-  json bad = readJson(bundled("spinning_occluder.json"));
+  json bad = readJson(animated("spinning_occluder.json"));
   bad["animation"]["frames"] = 0;
   const fs::path badScene = writeFile(tmp / "bad.json", bad.dump());
   struct Case {
     std::vector<std::string> args;
     std::string names;
   };
-  const std::string animated = bundled("spinning_occluder.json").string();
+  const std::string spinning = animated("spinning_occluder.json").string();
   const std::vector<Case> cases = {
       {{"render", "--scene", bundled("wall.json").string(), "--technique", "sm", "--frames", "0:1"}, "frame 0 only"},
-      {{"compare", "--scene", animated, "--techniques", "sm", "--frames", "5:2"}, "--frames"},
-      {{"groundtruth", "--scene", animated, "--frames", "0:48"}, "frames 0..47"},
-      {{"render", "--scene", animated, "--technique", "sm", "--frames", "0-4"}, "A:B[:STEP]"},
-      {{"render", "--scene", animated, "--technique", "sm", "--frames", "0:4:0"}, "STEP"},
+      {{"compare", "--scene", spinning, "--techniques", "sm", "--frames", "5:2"}, "--frames"},
+      {{"groundtruth", "--scene", spinning, "--frames", "0:48"}, "frames 0..47"},
+      {{"render", "--scene", spinning, "--technique", "sm", "--frames", "0-4"}, "A:B[:STEP]"},
+      {{"render", "--scene", spinning, "--technique", "sm", "--frames", "0:4:0"}, "STEP"},
       {{"render", "--scene", badScene.string(), "--technique", "sm"}, "animation.frames"},
   };
   for (std::size_t i = 0; i < cases.size(); ++i) {
