@@ -183,7 +183,7 @@ class ShadowVolumes final : public ShadowTechnique {
 
   // Builds the volumes of every object for one light sample and uploads them.
   GLsizei upload(const VolumeLight& light, bool depthPass, const std::pair<glm::vec3, glm::vec3>& bounds) {
-    VolumeInputs inputs{meshesOf_, revision_, light.directional, depthPass, light.position, light.direction};
+    VolumeInputs inputs{meshesOf_, revision_, light.directional, depthPass, light.position, light.direction, {}, {}, {}};
     if (depthPass) {
       std::tie(inputs.lo, inputs.hi) = bounds;
       for (const auto& mesh : meshes_) inputs.lightCaps.push_back(nearPlaneMayClip(mesh));
