@@ -45,7 +45,7 @@ json animatedScene() {
       "frames": 21, "fps": 24,
       "camera": [{"frame": 4, "eye": [0, 10, -20]}, {"frame": 14, "eye": [0, 20, -40]}],
       "light": [{"frame": 0, "direction": [1, 0, 0]}, {"frame": 20, "direction": [0, -1, 0]}],
-      "objects": [{"object": 0, "keys": [{"frame": 0, "translate": [0, 3, 0]},
+      "objects": [{"object": 0, "keys": [{"frame": 0, "translate": [0, 3, 0], "rotate": [0, 0, 0]},
                                           {"frame": 10, "translate": [10, 3, 0], "rotate": [0, 90, 0]}]}]
     }
   })");
