@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <iostream>
+#include <optional>
+#include <tuple>
 
 #include "groundtruth/volume_geometry.h"
 #include "testbed/gl/render_target.h"
@@ -118,9 +121,11 @@ class ShadowVolumes final : public ShadowTechnique {
     count_.ensure({.size = in.size, .color = GL_R32F, .borrowedDepth = &in.gbuffer.depth()});
   }
 
-  // The light-independent part, gathered once per scene: adjacency, face normals, bounds.
+  // The light-independent part, gathered once per scene and again when its objects move
+  // (Scene::geometryRevision): adjacency, face normals, bounds.
   void gather(const Scene& scene) {
-    if (meshesOf_ == &scene) return;
+    if (meshesOf_ == &scene && revision_ == scene.geometryRevision) return;
+    revision_ = scene.geometryRevision;
     meshes_.clear();
     for (const auto& object : scene.objects) meshes_.push_back(volumeMesh(meshTopology(object.mesh)));
     lo_ = glm::vec3(INFINITY);
@@ -165,16 +170,34 @@ class ShadowVolumes final : public ShadowTechnique {
     return !(nearest > nearPlane_ * 1.01f + 1e-3f * sceneExtent());
   }
 
+  // Everything the volumes of one light sample are built from: when a frame has the same
+  // (a still light and objects in an animation, a timed repeat), the last upload stands.
+  struct VolumeInputs {
+    const Scene* scene = nullptr;
+    std::uint64_t revision = 0;
+    bool directional = false, depthPass = false;
+    glm::vec3 position{0}, direction{0}, lo{0}, hi{0};
+    std::vector<bool> lightCaps;
+    bool operator==(const VolumeInputs&) const = default;
+  };
+
   // Builds the volumes of every object for one light sample and uploads them.
   GLsizei upload(const VolumeLight& light, bool depthPass, const std::pair<glm::vec3, glm::vec3>& bounds) {
+    VolumeInputs inputs{meshesOf_, revision_, light.directional, depthPass, light.position, light.direction, {}, {}, {}};
+    if (depthPass) {
+      std::tie(inputs.lo, inputs.hi) = bounds;
+      for (const auto& mesh : meshes_) inputs.lightCaps.push_back(nearPlaneMayClip(mesh));
+    }
+    if (uploaded_ && inputs == *uploaded_) return GLsizei(vertices_.size());
+    uploaded_.reset();
     vertices_.clear();
-    for (const auto& mesh : meshes_) {
+    for (std::size_t i = 0; i < meshes_.size(); ++i) {
       VolumeReach reach;
       if (depthPass) {
-        reach = depthPassReach(mesh, light, bounds.first, bounds.second);
-        reach.lightCaps = nearPlaneMayClip(mesh);
+        reach = depthPassReach(meshes_[i], light, bounds.first, bounds.second);
+        reach.lightCaps = inputs.lightCaps[i];
       }
-      appendShadowVolume(mesh, light, vertices_, reach);
+      appendShadowVolume(meshes_[i], light, vertices_, reach);
     }
     const std::size_t bytes = vertices_.size() * sizeof(VolumeVertex);
     if (bytes > buffer_.bytes()) {
@@ -186,6 +209,7 @@ class ShadowVolumes final : public ShadowTechnique {
       vertexArray_.setFloatAttribute(3, 1, offsetof(VolumeVertex, weight));
     }
     if (bytes > 0) glNamedBufferSubData(buffer_.id(), 0, GLsizeiptr(bytes), vertices_.data());
+    uploaded_ = std::move(inputs);
     return GLsizei(vertices_.size());
   }
 
@@ -258,6 +282,8 @@ class ShadowVolumes final : public ShadowTechnique {
   glm::mat4 view_{1.0f};     // the camera's, this frame
   float nearPlane_ = 1.0f;
   const Scene* meshesOf_ = nullptr;
+  std::uint64_t revision_ = 0;
+  std::optional<VolumeInputs> uploaded_;  // what the buffer holds the volumes of
 };
 
 }  // namespace

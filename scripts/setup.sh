@@ -16,7 +16,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   libembree-dev libcgal-demo assimp-testmodels fonts-dejavu-core
   libimgui-dev libglx-mesa0 libgl1-mesa-dri xvfb
-  python3-matplotlib python3-scipy slurm-wlm munge
+  python3-matplotlib python3-scipy slurm-wlm munge ffmpeg
 )
 
 log() { echo "setup: $*" >&2; }

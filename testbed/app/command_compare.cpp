@@ -7,12 +7,14 @@
 #include "groundtruth/shadow_volumes.h"
 #include "testbed/app/commands.h"
 #include "testbed/app/plugins.h"
+#include "testbed/app/sequence_run.h"
 #include "testbed/core/error.h"
 #include "testbed/core/messages.h"
 #include "testbed/gl/context.h"
 #include "testbed/harness/metric_table.h"
 #include "testbed/metrics/metrics.h"
 #include "testbed/report/comparison.h"
+#include "testbed/report/sequence_report.h"
 
 namespace testbed {
 namespace {
@@ -80,6 +82,8 @@ CommandRunner addCompareCommand(CLI::App& app) {
     std::string scene, techniques = "all";
     std::vector<std::string> assignments;
     int areaSamples = 0;
+    std::string frames;
+    bool noPlot = false;
   };
   auto options = std::make_shared<Options>();
   auto* command = app.add_subcommand("compare", "rank techniques against the ground truth on one scene");
@@ -88,6 +92,8 @@ CommandRunner addCompareCommand(CLI::App& app) {
   addSetOption(*command, options->assignments, "technique.parameter=value (repeatable)");
   command->add_option("--area-samples", options->areaSamples,
                       "also render the area-light reference with N samples (gives soft_rmse)");
+  addFramesOption(*command, options->frames);
+  command->add_flag("--no-plot", options->noPlot, "with --frames: skip the error-over-time plots");
   options->common.addTo(*command);
 
   return {command, [options]() {
@@ -103,7 +109,24 @@ CommandRunner addCompareCommand(CLI::App& app) {
     }
     if (options->areaSamples < 0 || options->areaSamples > 4096)
       throw InputError("--area-samples: " + std::to_string(options->areaSamples) + " is outside 0..4096");
-    const Scene scene = loadScene(options->scene);
+    Scene scene = loadScene(options->scene);
+    if (!options->frames.empty()) {
+      if (options->areaSamples > 0) throw InputError("--area-samples: not available with --frames");
+      SequenceJob job{parseFrameRange(options->frames, scene), true, {}, !options->noPlot};
+      job.entries.push_back({&shadowVolumeGroundTruth(), resolveParameters("groundtruth", {}, {})});
+      for (std::size_t i = 0; i < techniques.size(); ++i) job.entries.push_back({techniques[i], parameters[i]});
+      OutputFiles files(options->common.out);
+      for (const auto& name : sequenceOutputNames(job)) files.claim(name);
+      auto context = createContext(options->common.backend);
+      validateSettings(settings);
+      FrameRunner runner(scene, settings);
+      const auto records = runSequence(job, scene, runner, context->description(), files);
+      files.writeText("report.md", sequenceMarkdown(scene.name, records));
+      files.commit();
+      std::cerr << "testbed: wrote report.md, sequence.json and per technique T.mp4, T_frames.json, T_sequence.json"
+                << (job.plots ? ", T_error_over_time.png" : "") << " to " << oneLine(options->common.out) << "\n";
+      return 0;
+    }
     // The folder and every name the run will write, before any rendering.
     OutputFiles files(options->common.out);
     std::vector<std::string> ids = {"groundtruth", "area"};

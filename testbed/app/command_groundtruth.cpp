@@ -9,6 +9,7 @@
 #include "groundtruth/shadow_volumes.h"
 #include "testbed/app/commands.h"
 #include "testbed/app/plugins.h"
+#include "testbed/app/sequence_run.h"
 #include "testbed/core/error.h"
 #include "testbed/core/messages.h"
 #include "testbed/gl/context.h"
@@ -21,6 +22,7 @@ CommandRunner addGroundTruthCommand(CLI::App& app) {
     CommonOptions common;
     std::string scene, method = "volumes";
     int areaSamples = 0;
+    std::string frames;
   };
   auto options = std::make_shared<Options>();
   auto* command = app.add_subcommand("groundtruth", "render the exact (and area-light) reference");
@@ -28,6 +30,7 @@ CommandRunner addGroundTruthCommand(CLI::App& app) {
   command->add_option("--method", options->method, "volumes (shadow volumes) or raycast (Embree)")
       ->capture_default_str();
   command->add_option("--area-samples", options->areaSamples, "also render the area-light reference with N samples");
+  addFramesOption(*command, options->frames);
   options->common.addTo(*command);
 
   return {command, [options]() {
@@ -45,7 +48,21 @@ CommandRunner addGroundTruthCommand(CLI::App& app) {
       runs.emplace_back(&area, resolveParameters("area", area.info->parameters,
                                                  {{"area_samples", std::to_string(options->areaSamples)}}));
     }
-    const Scene scene = loadScene(options->scene);
+    Scene scene = loadScene(options->scene);
+    if (!options->frames.empty()) {
+      if (options->areaSamples > 0) throw InputError("--area-samples: not available with --frames");
+      const SequenceJob job{parseFrameRange(options->frames, scene), false, {{runs[0].first, runs[0].second}}};
+      OutputFiles files(options->common.out);
+      for (const auto& name : sequenceOutputNames(job)) files.claim(name);
+      auto context = createContext(options->common.backend);
+      validateSettings(settings);
+      FrameRunner runner(scene, settings);
+      runSequence(job, scene, runner, context->description(), files);
+      files.commit();
+      std::cerr << "testbed: wrote " << exact.info->id << ".mp4, _frames.json, _sequence.json to "
+                << oneLine(options->common.out) << "\n";
+      return 0;
+    }
     OutputFiles files(options->common.out);  // checked before any rendering
     for (const auto& [technique, parameters] : runs)
       for (const char* extension : {".png", ".exr", ".json"}) files.claim(technique->info->id + extension);

@@ -5,6 +5,7 @@
 
 #include "testbed/app/commands.h"
 #include "testbed/app/plugins.h"
+#include "testbed/app/sequence_run.h"
 #include "testbed/core/messages.h"
 #include "testbed/gl/context.h"
 #include "testbed/harness/metric_table.h"
@@ -17,12 +18,14 @@ CommandRunner addRenderCommand(CLI::App& app) {
     CommonOptions common;
     std::string scene, technique;
     std::vector<std::string> assignments;
+    std::string frames;
   };
   auto options = std::make_shared<Options>();
   auto* command = app.add_subcommand("render", "render one technique on one scene");
   command->add_option("--scene", options->scene, "scene file (JSON)")->required();
   command->add_option("--technique", options->technique, "technique id (see `testbed list`)")->required();
   addSetOption(*command, options->assignments, "technique parameter name=value (repeatable)");
+  addFramesOption(*command, options->frames);
   options->common.addTo(*command);
 
   return {command, [options]() {
@@ -32,7 +35,20 @@ CommandRunner addRenderCommand(CLI::App& app) {
     const RegisteredTechnique& technique = findTechnique(options->technique);
     const ParameterSet parameters =
         resolveParameters(technique.info->id, technique.info->parameters, parseAssignments(options->assignments));
-    const Scene scene = loadScene(options->scene);
+    Scene scene = loadScene(options->scene);
+    if (!options->frames.empty()) {
+      const SequenceJob job{parseFrameRange(options->frames, scene), false, {{&technique, parameters}}};
+      OutputFiles files(options->common.out);
+      for (const auto& name : sequenceOutputNames(job)) files.claim(name);
+      auto context = createContext(options->common.backend);
+      validateSettings(settings);
+      FrameRunner runner(scene, settings);
+      runSequence(job, scene, runner, context->description(), files);
+      files.commit();
+      std::cerr << "testbed: wrote " << technique.info->id << ".mp4, _frames.json, _sequence.json to "
+                << oneLine(options->common.out) << "\n";
+      return 0;
+    }
     // The folder and the names the run will write, before any rendering.
     OutputFiles files(options->common.out);
     const std::string& id = technique.info->id;

@@ -40,6 +40,9 @@ void addPluginOption(CLI::App& command, std::vector<std::string>& paths);
 void addOutOption(CLI::App& command, std::string& out);
 // --set name=value (repeatable), read by parseAssignments; `help` says whose parameters.
 void addSetOption(CLI::App& command, std::vector<std::string>& assignments, const std::string& help);
+// --frames all|A:B[:STEP] of render, groundtruth and compare (harness/sequence.h); empty
+// when not given.
+void addFramesOption(CLI::App& command, std::string& frames);
 // --no-plot of sweep and merge: skip scripts/sweep_plot.py.
 void addNoPlotFlag(CLI::App& command, bool& noPlot);
 

@@ -38,6 +38,10 @@ void addSetOption(CLI::App& command, std::vector<std::string>& assignments, cons
   addRepeatable(command, "--set", assignments, help);
 }
 
+void addFramesOption(CLI::App& command, std::string& frames) {
+  command.add_option("--frames", frames, "frames of an animated scene: all, or A:B[:STEP] (docs/motion.md)");
+}
+
 void addNoPlotFlag(CLI::App& command, bool& noPlot) {
   command.add_flag("--no-plot", noPlot, "skip the matplotlib plots");
 }

@@ -62,6 +62,8 @@ FrameRunner::FrameRunner(const Scene& scene, const RenderSettings& settings)
 
 void FrameRunner::lightMoved() { light_ = fittedLightTransforms(scene_); }
 
+void FrameRunner::objectsMoved(const std::vector<std::size_t>& objects) { geometry_.update(scene_, objects); }
+
 void FrameRunner::renderGBuffer() {
   PassTimer timer;
   {
@@ -121,11 +123,15 @@ ImageF TechniqueSession::visibility() const {
 }
 
 TechniqueRun FrameRunner::run(const RegisteredTechnique& technique, const ParameterSet& parameters) {
-  TechniqueRun result;
-  result.id = technique.info->id;
-  result.params = parameters.toJson();
   TechniqueSession session(*this, technique, parameters);
-  session.renderFrame();  // warm-up: shader compilation and first allocations
+  return run(session, parameters, true);
+}
+
+TechniqueRun FrameRunner::run(TechniqueSession& session, const ParameterSet& parameters, bool warmUp) {
+  TechniqueRun result;
+  result.id = session.id();
+  result.params = parameters.toJson();
+  if (warmUp) session.renderFrame();  // shader compilation and first allocations
   std::vector<TechniqueSession::Frame> frames;
   for (int i = 0; i < settings_.repeat; ++i) frames.push_back(session.renderFrame());
 

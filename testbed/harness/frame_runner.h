@@ -76,6 +76,7 @@ class TechniqueSession {
   // Reads the last frame's visibility: one channel, top-down, NaN where no receiver.
   ImageF visibility() const;
   const ShadowTechnique& technique() const { return *instance_; }
+  const std::string& id() const { return id_; }
 
  private:
   FrameRunner& runner_;
@@ -96,6 +97,9 @@ class FrameRunner {
   ~FrameRunner();
 
   TechniqueRun run(const RegisteredTechnique& technique, const ParameterSet& parameters);
+  // The same on a session kept across frames (an animation): a warm-up frame when asked,
+  // then `repeat` timed frames of the scene as it is now.
+  TechniqueRun run(TechniqueSession& session, const ParameterSet& parameters, bool warmUp);
   // Shaded image for people: Lambert × visibility plus ambient, RGB (harness/shading.h).
   ImageF shade(const ImageF& visibility) const;
 
@@ -104,6 +108,8 @@ class FrameRunner {
   void renderGBuffer();
   // Fits the light's transforms to the scene's current light again (scene/light_fit.h).
   void lightMoved();
+  // Uploads again the meshes of these objects, moved by an animation (scene/animation.h).
+  void objectsMoved(const std::vector<std::size_t>& objects);
 
   const Scene& scene() const { return scene_; }
   const RenderSettings& settings() const { return settings_; }

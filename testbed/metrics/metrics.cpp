@@ -158,8 +158,7 @@ ErrorMetrics computeErrorMetrics(const ImageF& visibility, const ImageF& groundT
     }
     for (double d : pool) sum += d;
     m.boundaryMean = sum / double(pool.size());
-    // Nearest rank: index ceil(0.95 n) - 1, in integers to avoid 0.95 * n rounding up.
-    const std::size_t rank = (95 * pool.size() + 99) / 100 - 1;
+    const std::size_t rank = p95Index(pool.size());
     std::nth_element(pool.begin(), pool.begin() + std::ptrdiff_t(rank), pool.end());
     m.boundaryP95 = pool[rank];
   }

@@ -7,6 +7,7 @@
 // between, NaN = no receiver). Receivers are the pixels where the ground truth is not NaN;
 // every metric is taken over receivers only. Binary state: lit <=> value >= 0.5.
 #include <array>
+#include <cstddef>
 #include <optional>
 
 #include "testbed/io/image_io.h"
@@ -49,6 +50,10 @@ struct ErrorMetrics {
 // Throws std::invalid_argument when an image is not one channel, the sizes differ, there
 // is no receiver, or the technique (or the reference) is NaN on a receiver pixel (the
 // message names the first such pixel as (x, y), y counted from the top row).
+// The nearest-rank 95th percentile's index in n >= 1 sorted values: ceil(0.95 n) - 1,
+// in integers so that 0.95 * n cannot round up.
+inline std::size_t p95Index(std::size_t n) { return (95 * n + 99) / 100 - 1; }
+
 ErrorMetrics computeErrorMetrics(const ImageF& visibility, const ImageF& groundTruth,
                                  const ImageF* areaReference = nullptr, const MetricOptions& options = {});
 

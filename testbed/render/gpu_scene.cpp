@@ -17,31 +17,47 @@ struct Vertex {
   float faceNormal[3];  // the triangle's own normal, for the facing rule
 };
 
+void appendVertices(const TriMesh& mesh, std::vector<Vertex>& vertices) {
+  for (const auto face : mesh.faces()) {
+    const auto faceNormal = mesh.normal(face);
+    for (const auto vertex : face.vertices()) {
+      auto normal = mesh.normal(vertex);
+      if (OpenMesh::dot(normal, faceNormal) < kCreaseCosine || !std::isfinite(normal[0])) normal = faceNormal;
+      const auto& p = mesh.point(vertex);
+      vertices.push_back({{p[0], p[1], p[2]},
+                          {normal[0], normal[1], normal[2]},
+                          {faceNormal[0], faceNormal[1], faceNormal[2]}});
+    }
+  }
+}
+
 }  // namespace
 
 GpuScene::GpuScene(const Scene& scene) {
   std::vector<Vertex> vertices;
   for (const auto& object : scene.objects) {
-    const TriMesh& mesh = object.mesh;
-    for (const auto face : mesh.faces()) {
-      const auto faceNormal = mesh.normal(face);
-      for (const auto vertex : face.vertices()) {
-        auto normal = mesh.normal(vertex);
-        if (OpenMesh::dot(normal, faceNormal) < kCreaseCosine || !std::isfinite(normal[0])) normal = faceNormal;
-        const auto& p = mesh.point(vertex);
-        vertices.push_back({{p[0], p[1], p[2]},
-                            {normal[0], normal[1], normal[2]},
-                            {faceNormal[0], faceNormal[1], faceNormal[2]}});
-      }
-    }
+    firstVertex_.push_back(vertices.size());
+    appendVertices(object.mesh, vertices);
   }
   vertexCount_ = vertices.size();
-  vertices_ = Buffer::create(vertices.size() * sizeof(Vertex), vertices.data());
+  // Only an animated scene's buffer is ever rewritten (update()).
+  vertices_ = Buffer::create(vertices.size() * sizeof(Vertex), vertices.data(),
+                             scene.animation ? GL_DYNAMIC_STORAGE_BIT : 0);
   vertexArray_ = VertexArray::create();
   vertexArray_.setVertexBuffer(vertices_, sizeof(Vertex));
   vertexArray_.setFloatAttribute(0, 3, offsetof(Vertex, position));
   vertexArray_.setFloatAttribute(1, 3, offsetof(Vertex, normal));
   vertexArray_.setFloatAttribute(2, 3, offsetof(Vertex, faceNormal));
+}
+
+void GpuScene::update(const Scene& scene, const std::vector<std::size_t>& objects) {
+  std::vector<Vertex> vertices;
+  for (const std::size_t i : objects) {
+    vertices.clear();
+    appendVertices(scene.objects[i].mesh, vertices);
+    glNamedBufferSubData(vertices_.id(), GLintptr(firstVertex_[i] * sizeof(Vertex)),
+                         GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data());
+  }
 }
 
 void GpuScene::draw() const {

@@ -1,7 +1,9 @@
 #pragma once
 // Scene description as read from a JSON scene file (format: docs/scenes.md "Scenes").
 // Everything here is CPU-side and validated; GPU upload lives in render/gpu_scene.h.
+#include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,7 @@ struct CameraDesc {
   float fovYDegrees = 45.0f;
   float nearPlane = 1.0f;
   float farPlane = 1000.0f;
+  bool operator==(const CameraDesc&) const = default;
 };
 
 enum class LightType { Spot, Directional };
@@ -40,12 +43,27 @@ struct LightDesc {
   bool fit = true;
   // Only the area-light reference uses the radius (disk around the light position).
   float radius = 0.0f;
+  bool operator==(const LightDesc&) const = default;
+};
+
+// An object's placement as the scene file gives it: scale, then rotate (degrees about X,
+// then Y, then Z), then translate.
+struct ObjectPose {
+  glm::vec3 scale{1.0f}, rotateDegrees{0.0f}, translate{0.0f};
+  glm::mat4 matrix() const;
+  bool operator==(const ObjectPose&) const = default;
 };
 
 struct SceneObject {
   std::string label;  // for messages: "objects[1] (mesh bunny)"
   TriMesh mesh;       // world space, triangulated, face and vertex normals filled in
+  ObjectPose pose;    // the placement `mesh` has now
+  glm::mat4 fit{1.0f};  // the object's "fit" (scale to size, centred), applied before `pose`
+  // Animated objects only: the mesh before `fit` and `pose`, to place it again per frame.
+  std::shared_ptr<const TriMesh> local;
 };
+
+struct Animation;  // scene/animation.h
 
 struct Scene {
   std::string name;
@@ -53,6 +71,10 @@ struct Scene {
   CameraDesc camera;
   LightDesc light;
   std::vector<SceneObject> objects;
+  std::shared_ptr<const Animation> animation;  // null: a still scene
+  // Bumped whenever an object's mesh changes (scene/animation.h applyFrame), so that what
+  // is derived from the meshes knows when to derive it again.
+  std::uint64_t geometryRevision = 0;
 };
 
 // Folder of the asset meshes that scenes name ("mesh": "bunny" → <dir>/bunny.off).

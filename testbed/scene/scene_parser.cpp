@@ -19,6 +19,7 @@
 
 #include "testbed/core/error.h"
 #include "testbed/io/json_input.h"
+#include "testbed/scene/animation.h"
 #include "testbed/scene/primitives.h"
 #include "testbed/scene/scene.h"
 #include "testbed/scene/view.h"
@@ -33,6 +34,8 @@ using Names = std::vector<std::string>;
 // Guards against absurd subdivide/segments values before any memory is spent on them.
 constexpr std::uint64_t kMaxSceneTriangles = 20'000'000;
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// An animation's frames are rendered one by one; this bounds a typo, not a real sequence.
+constexpr int kMaxFrames = 100'000;
 
 // A value for "got ...": one short line whatever the input holds.
 std::string show(const json& value) { return briefJson(value); }
@@ -64,7 +67,7 @@ class Parser {
     const Key top;
     if (!document.is_object())
       fail(top, "expected a JSON object at the top level, got " + show(document));
-    checkKeys(document, top, {"name", "camera", "light", "objects"});
+    checkKeys(document, top, {"name", "camera", "light", "objects", "animation"});
     Scene scene;
     scene.file = file_;
     scene.name = file_.stem().string();
@@ -80,9 +83,21 @@ class Parser {
     if (!objects.is_array() || objects.empty()) {
       fail(top / "objects", "expected a non-empty array of objects, got " + show(objects));
     }
+    std::shared_ptr<Animation> animation;
+    std::vector<bool> animated(objects.size(), false);
+    if (const json* block = find(document, "animation")) {
+      animation = std::make_shared<Animation>(
+          this->animation(*block, top / "animation", scene.camera, scene.light, objects.size()));
+      for (const auto& track : animation->objects) animated[track.object] = true;
+    }
     std::uint64_t triangles = 0;
     for (std::size_t i = 0; i < objects.size(); ++i) {
-      scene.objects.push_back(sceneObject(objects[i], (top / "objects")[i], triangles));
+      scene.objects.push_back(sceneObject(objects[i], (top / "objects")[i], triangles, animated[i]));
+    }
+    if (animation) {
+      checkAnimatedObjects(*animation, scene.objects, top / "animation" / "objects");
+      scene.animation = animation;
+      applyFrame(scene, 0);  // a loaded animated scene is its first frame
     }
     return scene;
   }
@@ -203,15 +218,19 @@ class Parser {
     if (const json* up = find(value, "up")) camera.up = vec3(*up, key / "up");
     camera.fovYDegrees = optional(value, key, "fov_y", 45.0, 0.0, 180.0);
     nearFar(value, key, camera.nearPlane, camera.farPlane);
+    checkCamera(camera, value, key);
+    return camera;
+  }
+
+  void checkCamera(const CameraDesc& camera, const json& given, const Key& key) const {
     const glm::vec3 view = camera.target - camera.eye;
     if (camera.eye == camera.target) fail(key / "target", "must differ from camera.eye");
-    checkCameraPrecision(camera, value, key);
+    checkCameraPrecision(camera, given, key);
     const float upLength = glm::length(camera.up);
     if (upLength == 0.0f ||
         glm::length(glm::cross(camera.up / upLength, glm::normalize(view))) < 1e-4f) {
       fail(key / "up", "must be non-zero and not parallel to the view direction");
     }
-    return camera;
   }
 
   // Values that pass as numbers but whose derived quantities degenerate in the renderer's
@@ -409,7 +428,7 @@ class Parser {
     }
   }
 
-  SceneObject sceneObject(const json& value, const Key& key, std::uint64_t& triangles) const {
+  SceneObject sceneObject(const json& value, const Key& key, std::uint64_t& triangles, bool animated) const {
     requireObject(value, key);
     const json* meshName = find(value, "mesh");
     const json* kind = find(value, "primitive");
@@ -443,12 +462,14 @@ class Parser {
       loop(static_cast<std::size_t>(subdivide));
       loop.detach();
     }
-    transform(value, key, object.mesh);
+    if (animated) object.local = std::make_shared<const TriMesh>(object.mesh);
+    transform(value, key, object);
     return object;
   }
 
   // fit, then scale, rotate (X, then Y, then Z) and translate.
-  void transform(const json& value, const Key& key, TriMesh& mesh) const {
+  void transform(const json& value, const Key& key, SceneObject& object) const {
+    TriMesh& mesh = object.mesh;
     glm::mat4 model(1.0f);
     if (const json* fit = find(value, "fit")) {
       const float target = positive(*fit, key / "fit");
@@ -464,37 +485,162 @@ class Parser {
       model = glm::scale(glm::mat4(1.0f), glm::vec3(target / largest)) *
               glm::translate(glm::mat4(1.0f), -(lo + hi) * 0.5f);
     }
-    glm::vec3 scale(1.0f);
-    if (const json* s = find(value, "scale")) {
-      const Key sk = key / "scale";
-      if (s->is_number()) {
-        scale = glm::vec3(positive(*s, sk));
-      } else if (s->is_array() && s->size() == 3) {
-        for (int i = 0; i < 3; ++i) scale[i] = positive((*s)[i], sk[i]);
-      } else {
-        fail(sk, "expected a positive number or [x, y, z], got " + show(*s));
-      }
-    }
-    glm::vec3 degrees(0.0f), offset(0.0f);
-    if (const json* r = find(value, "rotate")) degrees = vec3(*r, key / "rotate");
-    if (const json* t = find(value, "translate")) offset = vec3(*t, key / "translate");
-    const glm::vec3 radians = glm::radians(degrees);
-    const glm::mat4 rotation = glm::rotate(glm::mat4(1.0f), radians.z, {0, 0, 1}) *
-                               glm::rotate(glm::mat4(1.0f), radians.y, {0, 1, 0}) *
-                               glm::rotate(glm::mat4(1.0f), radians.x, {1, 0, 0});
-    model = glm::translate(glm::mat4(1.0f), offset) * rotation *
-            glm::scale(glm::mat4(1.0f), scale) * model;
+    ObjectPose& pose = object.pose;
+    if (const json* s = find(value, "scale")) pose.scale = scaleValue(*s, key / "scale");
+    if (const json* r = find(value, "rotate")) pose.rotateDegrees = vec3(*r, key / "rotate");
+    if (const json* t = find(value, "translate")) pose.translate = vec3(*t, key / "translate");
+    object.fit = model;
+    if (!placeMesh(mesh, pose.matrix() * model, mesh))
+      fail(key, "transformed coordinates are not finite (scale or translate too large?)");
+  }
 
-    for (const auto v : mesh.vertices()) {
-      const auto& p = mesh.point(v);
-      const glm::vec4 q = model * glm::vec4(p[0], p[1], p[2], 1.0f);
-      if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z)) {
-        fail(key, "transformed coordinates are not finite (scale or translate too large?)");
-      }
-      mesh.set_point(v, {q.x, q.y, q.z});
+  glm::vec3 scaleValue(const json& s, const Key& sk) const {
+    if (s.is_number()) return glm::vec3(positive(s, sk));
+    if (!s.is_array() || s.size() != 3) fail(sk, "expected a positive number or [x, y, z], got " + show(s));
+    glm::vec3 scale;
+    for (int i = 0; i < 3; ++i) scale[i] = positive(s[i], sk[i]);
+    return scale;
+  }
+
+  // ---- The animation block (scene/animation.h) ----
+
+  // Reads a list of keys, each with a "frame" in [0, frames − 1], strictly after the
+  // previous key's; `fields` reads the rest of a key and returns how many values it gave.
+  template <class Fields>
+  void keyList(const json& value, const Key& key, int frames, Fields fields) const {
+    if (!value.is_array() || value.empty()) fail(key, "expected a non-empty array of keys, got " + show(value));
+    int previous = -1;
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      const Key k = key[i];
+      requireObject(value[i], k);
+      const int frame = integer(require(value[i], k, "frame"), k / "frame", 0, frames - 1);
+      if (frame <= previous)
+        fail(k / "frame", "must be after the previous key's frame " + std::to_string(previous) + ", got " +
+                              std::to_string(frame) + " (keys sorted, each frame once)");
+      previous = frame;
+      if (fields(value[i], k, frame) == 0) fail(k, "gives no value besides \"frame\"");
     }
-    // Recomputing from the moved points handles non-uniform scale without an inverse transpose.
-    mesh.update_normals();
+  }
+
+  template <class T>
+  static int add(Track<T>& track, int frame, const T& value) {
+    track.keys.emplace_back(frame, value);
+    return 1;
+  }
+
+  Animation animation(const json& value, const Key& key, const CameraDesc& camera, const LightDesc& light,
+                      std::size_t objectCount) const {
+    requireObject(value, key);
+    checkKeys(value, key, {"frames", "fps", "camera", "light", "objects"});
+    Animation a;
+    a.camera = camera;
+    a.light = light;
+    a.frames = integer(require(value, key, "frames"), key / "frames", 1, kMaxFrames);
+    a.fps = optionalInteger(value, key, "fps", 30, 1, 240);
+    if (const json* keys = find(value, "camera")) {
+      keyList(*keys, key / "camera", a.frames, [&](const json& k, const Key& kk, int frame) {
+        checkKeys(k, kk, {"frame", "eye", "target", "fov_y"});
+        int n = 0;
+        if (const json* v = find(k, "eye")) n += add(a.cameraEye, frame, vec3(*v, kk / "eye"));
+        if (const json* v = find(k, "target")) n += add(a.cameraTarget, frame, vec3(*v, kk / "target"));
+        if (find(k, "fov_y")) n += add(a.cameraFovY, frame, optional(k, kk, "fov_y", 45.0, 0.0, 180.0));
+        return n;
+      });
+    }
+    if (const json* keys = find(value, "light")) lightKeys(*keys, key / "light", a);
+    if (const json* objects = find(value, "objects")) objectTracks(*objects, key / "objects", a, objectCount);
+    checkFrames(a, key);
+    return a;
+  }
+
+  void lightKeys(const json& keys, const Key& key, Animation& a) const {
+    const bool spot = a.light.type == LightType::Spot;
+    const Names own = spot ? Names{"eye", "target", "fov"} : Names{"direction", "target", "extent"};
+    const Names other = spot ? Names{"direction", "extent"} : Names{"eye", "fov"};
+    keyList(keys, key, a.frames, [&](const json& k, const Key& kk, int frame) {
+      for (const auto& name : other)
+        if (k.contains(name))
+          fail(kk / name, std::string("a ") + (spot ? "spot" : "directional") + " light has no " + name +
+                              " (its keys may give " + join(own) + ")");
+      Names allowed = own;
+      allowed.push_back("frame");
+      checkKeys(k, kk, allowed);
+      int n = 0;
+      if (const json* v = find(k, "eye")) n += add(a.lightEye, frame, vec3(*v, kk / "eye"));
+      if (const json* v = find(k, "target")) n += add(a.lightTarget, frame, vec3(*v, kk / "target"));
+      if (find(k, "fov")) n += add(a.lightFov, frame, optional(k, kk, "fov", 45.0, 0.0, 180.0));
+      if (const json* v = find(k, "extent")) n += add(a.lightExtent, frame, positive(*v, kk / "extent"));
+      if (const json* v = find(k, "direction")) {
+        const glm::vec3 d = vec3(*v, kk / "direction");
+        if (!(glm::length(d) > 0.0f)) fail(kk / "direction", "must be a non-zero vector");
+        const glm::vec3 unit = glm::normalize(d);
+        // Opposite directions have no one great circle between them.
+        if (!a.lightDirection.empty() && glm::dot(a.lightDirection.keys.back().second, unit) < -0.9999f)
+          fail(kk / "direction", "is opposite to the previous key's: the great circle between them is undefined");
+        n += add(a.lightDirection, frame, unit);
+      }
+      return n;
+    });
+  }
+
+  void objectTracks(const json& value, const Key& key, Animation& a, std::size_t objectCount) const {
+    if (!value.is_array() || value.empty())
+      fail(key, "expected a non-empty array of {\"object\": index, \"keys\": [...]}, got " + show(value));
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      const Key k = key[i];
+      requireObject(value[i], k);
+      checkKeys(value[i], k, {"object", "keys"});
+      ObjectAnimation track;
+      const int last = int(objectCount) - 1;
+      track.object = std::size_t(integer(require(value[i], k, "object"), k / "object", 0, last));
+      for (const auto& other : a.objects)
+        if (other.object == track.object)
+          fail(k / "object", "objects[" + std::to_string(track.object) + "] is animated twice");
+      keyList(require(value[i], k, "keys"), k / "keys", a.frames, [&](const json& o, const Key& ok, int frame) {
+        checkKeys(o, ok, {"frame", "scale", "rotate", "translate"});
+        int n = 0;
+        if (const json* v = find(o, "scale")) n += add(track.scale, frame, scaleValue(*v, ok / "scale"));
+        if (const json* v = find(o, "rotate")) n += add(track.rotate, frame, vec3(*v, ok / "rotate"));
+        if (const json* v = find(o, "translate")) n += add(track.translate, frame, vec3(*v, ok / "translate"));
+        return n;
+      });
+      a.objects.push_back(std::move(track));
+    }
+  }
+
+  // Every frame's camera and light must pass the checks a still scene's do.
+  void checkFrames(const Animation& a, const Key& key) const {
+    const bool camera = !a.cameraEye.empty() || !a.cameraTarget.empty() || !a.cameraFovY.empty();
+    const bool light = !a.lightEye.empty() || !a.lightTarget.empty() || !a.lightDirection.empty() ||
+                       !a.lightFov.empty() || !a.lightExtent.empty();
+    for (int frame = 0; frame < a.frames && (camera || light); ++frame) {
+      try {
+        if (camera) checkCamera(cameraAt(a, frame), json::object(), key / "camera");
+        if (light) {
+          const LightDesc l = lightAt(a, frame);
+          if (l.type == LightType::Spot && l.eye == l.target) fail(key / "light", "eye and target meet");
+          checkLightTransforms(l, key / "light");
+        }
+      } catch (const InputError& e) {
+        throw InputError(std::string(e.what()) + " (at frame " + std::to_string(frame) + ")");
+      }
+    }
+  }
+
+  // Every key's placement must be finite; linear values in between then are too.
+  void checkAnimatedObjects(Animation& a, const std::vector<SceneObject>& objects, const Key& key) const {
+    for (std::size_t i = 0; i < a.objects.size(); ++i) {
+      ObjectAnimation& track = a.objects[i];
+      const SceneObject& object = objects[track.object];
+      track.base = object.pose;
+      for (const auto* keys : {&track.scale.keys, &track.rotate.keys, &track.translate.keys})
+        for (const auto& [frame, unused] : *keys) {
+          TriMesh placed;
+          if (!placeMesh(*object.local, poseAt(track, frame).matrix() * object.fit, placed))
+            fail(key[i], "transformed coordinates at frame " + std::to_string(frame) +
+                             " are not finite (scale or translate too large?)");
+        }
+    }
   }
 
   fs::path file_;

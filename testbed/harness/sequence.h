@@ -1,0 +1,55 @@
+#pragma once
+// Runs over the frames of an animated scene (docs/motion.md): which frames (--frames), how
+// the runner follows the scene from one frame to the next, and what a technique's sequence
+// becomes on disk: a per-frame record each frame and one sequence record at the end.
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "testbed/harness/frame_runner.h"
+#include "testbed/harness/record.h"
+#include "testbed/metrics/temporal_metrics.h"
+#include "testbed/scene/animation.h"
+
+namespace testbed {
+
+// Frames first, first + step, ... up to last (inclusive).
+struct FrameRange {
+  int first = 0, last = 0, step = 1;
+  int count() const { return (last - first) / step + 1; }
+  int at(int index) const { return first + index * step; }
+};
+
+// "all" or "A:B[:STEP]" with 0 <= A <= B < the scene's frames and STEP >= 1; a scene
+// without animation has frame 0 only. Throws InputError("--frames: ...").
+FrameRange parseFrameRange(const std::string& text, const Scene& scene);
+
+// Moves the scene to `frame` and brings the runner up to date: moved objects uploaded
+// again, the G-buffer rendered again when the camera or an object moved, and the light's
+// set-up fitted again, every frame (records say "light_fit": "per frame").
+FrameChange advanceTo(Scene& scene, FrameRunner& runner, int frame);
+
+// One technique's figures over a sequence. Holds the per-frame values of every stored
+// metric (numbers, not images) and the temporal accumulator, which keeps one frame.
+class SequenceSeries {
+ public:
+  // The frame's record as the series file holds it: the record plus "frame",
+  // "light_fit" and, when `temporal` is given and closes a pair, "temporal".
+  nlohmann::json addFrame(int frame, const Record& record, const TemporalFrame* temporal);
+  // Every stored metric's mean, p95 and max over frames ("series"), the temporal figures
+  // when frames were compared ("temporal"), and what was run.
+  nlohmann::json sequenceRecord(const Record& last, const FrameRange& range, int fps) const;
+  const TemporalMetrics& temporal() const { return accumulator_.result(); }
+
+ private:
+  std::map<std::string, std::vector<double>> values_;  // by metric name
+  TemporalAccumulator accumulator_;
+  bool compared_ = false;
+};
+
+// Shaded image | error heat map, for a video frame: two RGB images of one height.
+ImageF sideBySide(const ImageF& left, const ImageF& right);
+
+}  // namespace testbed
