@@ -37,6 +37,10 @@ struct Record {
   std::uint64_t triangles = 0, memoryBytes = 0;
   LightRecord light;
   std::string backend;
+  // The work counters (docs/work-counters.md): "work": null where the GL offers no pipeline
+  // statistics; records made before the counters have no "work" key (workRecorded false).
+  std::optional<PassWork> work;
+  bool workRecorded = true;
   std::optional<ErrorMetrics> error;  // null until compared with the ground truth
   std::optional<std::size_t> cell;    // a sweep's cell index (records.json only)
 

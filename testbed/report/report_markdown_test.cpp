@@ -42,7 +42,7 @@ TEST(ReportMarkdown, GivesTheTechniqueOnlyAndTheWholeFrameRatio) {
   EXPECT_EQ(rowOf(md, "sm").rfind("| `sm` | 10.00 | 10.00 | 1.00 | 1.00 | 1 |", 0), 0u) << rowOf(md, "sm");
   // Without an error block every error column reads "–".
   EXPECT_NE(rowOf(md, "sm").find("| 1 | – | – | – | – | – | – | – | – |"), std::string::npos) << rowOf(md, "sm");
-  EXPECT_NE(md.find("| technique | GPU ms (queries) | wall ms | × sm | × sm frame | memory KiB | mismatch % | edge mismatch % "
+  EXPECT_NE(md.find("| technique | GPU ms (queries) | wall ms | × sm | × sm frame | memory KiB | invocations (k) | mismatch % | edge mismatch % "
                     "| RMSE | leak % | overestimation % | boundary px mean | boundary px p95 | soft RMSE |\n|---|---:|"),
             std::string::npos)
       << md;
