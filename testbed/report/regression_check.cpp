@@ -183,14 +183,14 @@ CheckReport compareRecords(const std::vector<CheckRecord>& baseline, const std::
   // A change beyond `slack` in the metric's worse direction regresses, in its better one improves.
   auto judge = [&](const CheckRecord& c, const Metric& metric, double b, double now, double slack) {
     const double gain = metric.better == Better::Lower ? b - now : now - b;
-    if (gain < -slack) report.findings.push_back({FindingKind::Regression, &c, &metric, b, now});
-    else if (gain > slack) report.findings.push_back({FindingKind::Improvement, &c, &metric, b, now});
+    if (gain < -slack) report.findings.push_back({FindingKind::Regression, &c, &metric, b, now, {}});
+    else if (gain > slack) report.findings.push_back({FindingKind::Improvement, &c, &metric, b, now, {}});
   };
 
   for (const auto& b : baseline) {
     const auto it = byKey.find(b.key());
     if (it == byKey.end()) {
-      report.findings.push_back({FindingKind::Regression, &b, nullptr, 0, 0});
+      report.findings.push_back({FindingKind::Regression, &b, nullptr, 0, 0, {}});
       continue;
     }
     const CheckRecord& c = *it->second;
@@ -221,9 +221,9 @@ CheckReport compareRecords(const std::vector<CheckRecord>& baseline, const std::
         // A ratio above baseline × (1 + tol) is slower; below baseline / (1 + tol) faster (symmetric).
         const double bRatio = *b.smRatio, cRatio = *c.smRatio;
         if (cRatio > bRatio * (1 + tolerances.speed))
-          report.findings.push_back({FindingKind::Regression, &c, &speedMetric(), bRatio, cRatio});
+          report.findings.push_back({FindingKind::Regression, &c, &speedMetric(), bRatio, cRatio, {}});
         else if (cRatio * (1 + tolerances.speed) < bRatio)
-          report.findings.push_back({FindingKind::Improvement, &c, &speedMetric(), bRatio, cRatio});
+          report.findings.push_back({FindingKind::Improvement, &c, &speedMetric(), bRatio, cRatio, {}});
       }
     }
 
@@ -239,7 +239,7 @@ CheckReport compareRecords(const std::vector<CheckRecord>& baseline, const std::
           judge(c, m, *before, *now, 0.0);
   }
   for (const auto& c : current)
-    if (!matched.count(c.key())) report.findings.push_back({FindingKind::New, &c, nullptr, 0, 0});
+    if (!matched.count(c.key())) report.findings.push_back({FindingKind::New, &c, nullptr, 0, 0, {}});
   return report;
 }
 

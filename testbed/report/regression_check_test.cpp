@@ -186,6 +186,75 @@ TEST(RegressionCheck, MissingRecordIsARegressionNewOneIsNot) {
   EXPECT_FALSE(check(run(), current).report.failed());
 }
 
+// A run whose records carry a work block: a shadow-map and a visibility pass each.
+json countedRun() {
+  json r = run();
+  for (auto& record : r) {
+    json counts = json::object();
+    for (const WorkCounter& counter : kWorkCounters) counts[std::string(counter.name)] = 1000;
+    record["work"] = {{"passes", {{"shadow-map", counts}, {"visibility", counts}}}, {"total", counts}};
+  }
+  return r;
+}
+
+TEST(RegressionCheck, WorkCountersUnchangedPass) {
+  const Checked c = check(countedRun(), countedRun());
+  EXPECT_TRUE(c.report.findings.empty());
+  EXPECT_TRUE(c.report.notes.empty()) << c.report.notes.front();
+}
+
+// The planted regression: pcf's shadow-map pass does 1 more fragment invocation than its
+// baseline (a lowered baseline count) — with the default tolerance 0, any rise fails.
+TEST(RegressionCheck, AnyRiseOfAWorkCounterInAnyPassFails) {
+  json baseline = countedRun();
+  baseline[2]["work"]["passes"]["shadow-map"]["fragment_invocations"] = 999;
+  const Checked c = check(baseline, countedRun());
+  EXPECT_TRUE(c.report.failed());
+  EXPECT_EQ(findings(c, FindingKind::Regression), (Names{"pcf fragment_invocations"}));
+  EXPECT_EQ(c.report.findings.front().pass, "shadow-map");
+  const std::string md = checkReportMarkdown(c.report, {});
+  EXPECT_NE(md.find("- bunny · pcf · 512² (1280×720, depth 16): pass `shadow-map` fragment_invocations 999 → 1000 (+0.1%)"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("work tolerance 0%"), std::string::npos) << md;
+  // Within a stated tolerance it passes; a fall is an improvement.
+  EXPECT_FALSE(check(baseline, countedRun(), {.work = 0.01}).report.failed());
+  const Checked fewer = check(countedRun(), baseline);
+  EXPECT_FALSE(fewer.report.failed());
+  EXPECT_EQ(findings(fewer, FindingKind::Improvement), (Names{"pcf fragment_invocations"}));
+}
+
+// A pass new in the current run counts from 0: its work is a rise.
+TEST(RegressionCheck, ANewPassIsMoreWork) {
+  json current = countedRun();
+  current[3]["work"]["passes"]["blur"] = current[3]["work"]["passes"]["visibility"];
+  const Checked c = check(countedRun(), current);
+  EXPECT_EQ(findings(c, FindingKind::Regression).size(), kWorkCounters.size());
+  EXPECT_EQ(c.report.findings.front().pass, "blur");
+  EXPECT_EQ(c.report.findings.front().record->record.technique, "vsm");
+}
+
+// No counts is never zero counts: records without a work block, or from another backend,
+// are not compared, and the report says why.
+TEST(RegressionCheck, WorkIsNotComparedWithoutCountsOrAcrossBackends) {
+  json current = countedRun();
+  current[2]["work"] = nullptr;
+  const Checked missing = check(countedRun(), current);
+  EXPECT_FALSE(missing.report.failed());
+  ASSERT_EQ(missing.report.notes.size(), 1u);
+  EXPECT_NE(missing.report.notes[0].find("work not compared for bunny · pcf"), std::string::npos);
+  EXPECT_NE(missing.report.notes[0].find("no pipeline statistics"), std::string::npos);
+
+  json other = countedRun();
+  for (auto& r : other) {
+    r["backend"] = "egl: NVIDIA";
+    r["work"]["passes"]["visibility"]["vertex_invocations"] = 5000;
+  }
+  const Checked moved = check(countedRun(), other);
+  EXPECT_FALSE(moved.report.failed());
+  EXPECT_NE(moved.report.notes.back().find("another rasterizer counts other work"), std::string::npos);
+}
+
 TEST(RegressionCheck, MalformedRecordsNameTheFileAndField) {
   auto message = [](const json& records) {
     return test::inputErrorOf([&] { parseCheckRecords(records, "runs/metrics.json"); }).value_or("accepted");
@@ -212,6 +281,12 @@ TEST(RegressionCheck, MalformedRecordsNameTheFileAndField) {
   r[3]["memory_bytes"] = -1;
   EXPECT_EQ(message(r), "runs/metrics.json: [3].memory_bytes: expected a non-negative integer");
   EXPECT_NE(message(json::object()).find("expected a JSON array"), std::string::npos);
+  r = countedRun();
+  r[1]["work"]["passes"]["visibility"].erase("compute_invocations");
+  EXPECT_EQ(message(r), "runs/metrics.json: [1].work.passes.visibility.compute_invocations: missing");
+  r = countedRun();
+  r[1]["work"]["total"]["vertex_invocations"] = -3;
+  EXPECT_EQ(message(r), "runs/metrics.json: [1].work.total.vertex_invocations: expected a non-negative integer");
 }
 
 }  // namespace
