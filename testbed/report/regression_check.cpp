@@ -79,14 +79,14 @@ void addNote(CheckReport& report, const std::string& note) {
   if (std::find(report.notes.begin(), report.notes.end(), note) == report.notes.end()) report.notes.push_back(note);
 }
 
-// Why two matched records' work counts are not compared; empty when they are.
+// Why two matched records' work counts are not compared, as a note; empty when they are.
 std::string whyNoWork(const CheckRecord& b, const CheckRecord& c) {
   if (b.record.backend != c.record.backend)
-    return "the backends differ (baseline `" + b.record.backend + "`, current `" + c.record.backend +
-           "`); another rasterizer counts other work.";
+    return "work not compared: the backends differ (baseline `" + b.record.backend + "`, current `" +
+           c.record.backend + "`); another rasterizer counts other work.";
   for (const CheckRecord* r : {&b, &c})
     if (!r->record.work)
-      return "no work block in " + r->file +
+      return "work not compared for " + label(b) + ": no work block in " + r->file +
              (r->record.workRecorded ? " (the GL has no pipeline statistics)." : " (made before the work counters).");
   return "";
 }
@@ -228,7 +228,7 @@ CheckReport compareRecords(const std::vector<CheckRecord>& baseline, const std::
     }
 
     if (const std::string why = whyNoWork(b, c); !why.empty())
-      addNote(report, "work not compared for " + label(b) + ": " + why);
+      addNote(report, why);
     else
       compareWork(report, b, c, tolerances.work);
 
