@@ -47,7 +47,8 @@ void workSection(std::ostringstream& md, const Comparison& c) {
        << ") offers no pipeline statistics (ARB_pipeline_statistics_query).\n";
     return;
   }
-  md << "Pipeline statistics of one frame (docs/work-counters.md): deterministic on llvmpipe, where times are not.\n\n"
+  md << "Pipeline statistics of a frame (docs/work-counters.md; with --repeat, each pass's median): exact on "
+        "llvmpipe, where times are not.\n\n"
      << "| technique | pass |";
   std::string rule = "|---|---|";
   for (const WorkCounter& counter : kWorkCounters) {
