@@ -84,10 +84,13 @@ std::string whyNoWork(const CheckRecord& b, const CheckRecord& c) {
   if (b.record.backend != c.record.backend)
     return "work not compared: the backends differ (baseline `" + b.record.backend + "`, current `" +
            c.record.backend + "`); another rasterizer counts other work.";
+  // One note per reason, not per record: a baseline from before the counters lacks them all.
   for (const CheckRecord* r : {&b, &c})
     if (!r->record.work)
-      return "work not compared for " + label(b) + ": no work block in " + r->file +
-             (r->record.workRecorded ? " (the GL has no pipeline statistics)." : " (made before the work counters).");
+      return r->record.workRecorded
+                 ? "work not compared for records whose GL offered no pipeline statistics (`\"work\": null`)."
+                 : "work not compared for records made before the work counters (no `work` key): refresh the "
+                   "baseline with scripts/baselines.sh.";
   return "";
 }
 

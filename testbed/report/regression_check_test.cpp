@@ -246,8 +246,8 @@ TEST(RegressionCheck, WorkIsNotComparedWithoutCountsOrAcrossBackends) {
   const Checked missing = check(run(), current);
   EXPECT_FALSE(missing.report.failed());
   ASSERT_EQ(missing.report.notes.size(), 1u);
-  EXPECT_NE(missing.report.notes[0].find("work not compared for bunny · pcf"), std::string::npos);
-  EXPECT_NE(missing.report.notes[0].find("no pipeline statistics"), std::string::npos);
+  EXPECT_NE(missing.report.notes[0].find("work not compared for records whose GL offered no pipeline statistics"),
+            std::string::npos);
 
   json other = run();
   for (auto& r : other) {
@@ -259,11 +259,10 @@ TEST(RegressionCheck, WorkIsNotComparedWithoutCountsOrAcrossBackends) {
   EXPECT_TRUE(hasNote(moved, "another rasterizer counts other work"));
 
   json old = run();
-  old[3].erase("work");
+  for (auto& r : old) r.erase("work");
   const Checked before = check(old, run());
   EXPECT_FALSE(before.report.failed());
-  ASSERT_EQ(before.report.notes.size(), 1u);
-  EXPECT_NE(before.report.notes[0].find("bunny · vsm"), std::string::npos);
+  ASSERT_EQ(before.report.notes.size(), 1u);  // once, not once per record
   EXPECT_NE(before.report.notes[0].find("made before the work counters"), std::string::npos);
 }
 
