@@ -8,9 +8,10 @@
 // --backend=osmesa|egl, --plugin=PATH (repeatable: techniques from a plugin library,
 // testbed/technique/plugin.h). A bad value is one line naming the flag, exit 2.
 // Counters: the metric table's kCounter metrics (harness/metric_table.h: memory_bytes,
-// cpu_ms, gpu_ms.total, wall_ms.total, x_sm, x_sm_frame) of the benchmark's mean frame, sm
-// being measured on the same runner right after the benchmark; and one "<pass>_ms" per pass
-// in the frame time's measure.
+// cpu_ms, gpu_ms.total, wall_ms.total, x_sm, x_sm_frame, the work counters' totals) of the
+// benchmark's mean frame, sm being measured on the same runner right after the benchmark;
+// one "<pass>_ms" per pass in the frame time's measure; and where the GL counts work, one
+// "<pass>_<counter>" per pass and work counter (docs/work-counters.md).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -141,6 +142,7 @@ void runTechnique(benchmark::State& state, std::string techniqueId, std::string 
     mean.times.totalMs += frame.times.totalMs;
     mean.times.wallTotalMs += frame.times.wallTotalMs;
     mean.cpuMs += frame.cpuMs;
+    mean.times.work = frame.times.work;  // counts, not times: the same every frame on llvmpipe
   }
   const double n = double(std::max<benchmark::IterationCount>(state.iterations(), 1));
   for (auto* passes : {&mean.times.passMs, &mean.times.wallPassMs})
@@ -154,6 +156,10 @@ void runTechnique(benchmark::State& state, std::string techniqueId, std::string 
     if (metric.shownIn(testbed::kCounter))
       if (const auto value = metric.value(record, &sm)) state.counters[std::string(metric.name)] = *value;
   for (const auto& [name, ms] : record.timed().passesMs) state.counters[name + "_ms"] = ms;
+  if (record.work)
+    for (const auto& [name, counts] : record.work->passes)
+      for (std::size_t i = 0; i < counts.size(); ++i)
+        state.counters[name + "_" + std::string(testbed::kWorkCounters[i].name)] = double(counts[i]);
   state.SetLabel(g_fixture.context->description());
 }
 

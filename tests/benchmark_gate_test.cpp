@@ -1,9 +1,11 @@
 // The benchmark CI gate (docs/benchmarks-and-check.md "The benchmark gate"): `compare` on every bundled scene at the
 // small size of tests/baselines/settings, checked against the committed baselines in
 // tests/baselines/<scene>/metrics.json. Accuracy (every error metric) and memory must be
-// exactly the baseline's — llvmpipe is deterministic; `testbed check` then reports speed
-// (the ratio to sm) without gating it, since CI machines differ. An intended change of
-// output refreshes the baselines in the same commit: scripts/baselines.sh.
+// exactly the baseline's — llvmpipe is deterministic; `testbed check` then gates the work
+// counters (no pass of any technique may count more than its baseline at the default
+// --work-tolerance, docs/work-counters.md) and reports speed (the ratio to sm) without
+// gating it, since wall times on shared CI machines move ±30 %. An intended change of output
+// or work refreshes the baselines in the same commit: scripts/baselines.sh.
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
@@ -48,7 +50,7 @@ const json* findRecord(const json& records, const std::string& technique) {
 
 class BenchmarkGate : public testing::TestWithParam<std::string> {};
 
-TEST_P(BenchmarkGate, AccuracyAndMemoryEqualTheBaseline) {
+TEST_P(BenchmarkGate, AccuracyMemoryAndWorkHoldTheBaseline) {
   const std::string scene = GetParam();
   const fs::path baseline = kBaselines / scene / "metrics.json";
   ASSERT_TRUE(fs::exists(baseline)) << baseline << " is missing: run scripts/baselines.sh";
@@ -71,11 +73,31 @@ TEST_P(BenchmarkGate, AccuracyAndMemoryEqualTheBaseline) {
   }
   EXPECT_EQ(current.size(), expected.size()) << "techniques were added or removed: run scripts/baselines.sh";
 
-  // Speed is reported, never gated here: any ratio passes.
+  // Work is gated at the default tolerance; speed is reported, never gated here: any ratio passes.
   const RunResult check = runTestbed({"check", "--baseline", baseline.string(), "--current", out.string(),
                                      "--speed-tolerance", "1e9", "--out", (out / "check.md").string()});
   EXPECT_EQ(check.exitCode, 0) << check.describe();
-  std::cout << readFile(out / "check.md");
+  const std::string report = readFile(out / "check.md");
+  std::cout << report;
+  EXPECT_EQ(report.find("work not compared"), std::string::npos) << "the baseline lacks work counts: run scripts/baselines.sh";
+
+  // The planted regression: a baseline whose sm shadow-map pass counted one fragment fewer
+  // than this run does. The gate must fail and name technique, pass, counter and counts.
+  json planted = expected;
+  json& sm = *const_cast<json*>(findRecord(planted, "sm"));
+  ASSERT_TRUE(sm["work"].is_object()) << "llvmpipe offers ARB_pipeline_statistics_query: the baseline should count work";
+  const std::uint64_t fragments = (*findRecord(current, "sm"))["work"]["passes"]["shadow-map"]["fragment_invocations"];
+  sm["work"]["passes"]["shadow-map"]["fragment_invocations"] = fragments - 1;
+  writeFile(tmp / "planted.json", planted.dump(2));
+  const RunResult caught = runTestbed({"check", "--baseline", (tmp / "planted.json").string(), "--current",
+                                      out.string(), "--speed-tolerance", "1e9"});
+  EXPECT_EQ(caught.exitCode, 3) << caught.describe();
+  const std::string finding = "pass `shadow-map` fragment_invocations " + std::to_string(fragments - 1) + " → " +
+                              std::to_string(fragments);
+  const auto at = caught.out.find(finding);
+  ASSERT_NE(at, std::string::npos) << caught.describe();
+  const auto lineStart = caught.out.rfind('\n', at) + 1;
+  EXPECT_NE(caught.out.substr(lineStart, at - lineStart).find(" · sm · "), std::string::npos) << caught.describe();
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BenchmarkGate, testing::ValuesIn(bundledScenes()),

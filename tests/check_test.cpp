@@ -103,6 +103,7 @@ TEST(CliCheck, BadInputExitsTwoNamingTheFile) {
       {{"--current", (tmp / "empty").string()}, "no metrics.json in it or below it"},
       {{"--current", baseline, "--speed-tolerance", "-0.1"}, "--speed-tolerance: expected a finite non-negative"},
       {{"--current", baseline, "--error-tolerance", "inf"}, "--error-tolerance: expected a finite non-negative"},
+      {{"--current", baseline, "--work-tolerance", "-1"}, "--work-tolerance: expected a finite non-negative"},
       {{"--current", baseline, "--out", tmp.path().string()}, "--out: "},
   };
   for (const auto& c : cases) {

@@ -1,5 +1,6 @@
 // A record from real frames: with --repeat > 1 each measure's total is the sum of its
-// passes as written (docs/record.md "The record"), and the record reads back to the same bytes.
+// passes as written (docs/record.md "The record"), so are the work counters', and the record
+// reads back to the same bytes.
 #include <gtest/gtest.h>
 
 #include "testbed/harness/record.h"
@@ -23,6 +24,16 @@ TEST(RecordFromFrames, TotalIsTheSumOfThePassesWithRepeat) {
     EXPECT_FALSE(written[measure]["passes"].empty());
     EXPECT_DOUBLE_EQ(written[measure]["total"].get<double>(), sum);
   }
+  // The work block likewise: each counter's total is the sum of its passes' (median) counts.
+  ASSERT_TRUE(written["work"].is_object()) << "llvmpipe counts work";
+  for (const WorkCounter& counter : kWorkCounters) {
+    const std::string name(counter.name);
+    std::uint64_t sum = 0;
+    for (const auto& [pass, counts] : written["work"]["passes"].items()) sum += counts[name].get<std::uint64_t>();
+    EXPECT_EQ(written["work"]["total"][name].get<std::uint64_t>(), sum) << name;
+  }
+  EXPECT_EQ(written["work"]["passes"].size(), written["gpu_ms"]["passes"].size());
+  EXPECT_GT(written["work"]["total"]["fragment_invocations"].get<std::uint64_t>(), 0u);
   EXPECT_EQ(readRecord(nlohmann::json::parse(written.dump(2)), "pcf.json").memoryBytes, record.memoryBytes);
   EXPECT_EQ(nlohmann::json(readRecord(nlohmann::json::parse(written.dump(2)), "pcf.json")).dump(2), written.dump(2));
 }

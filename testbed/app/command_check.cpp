@@ -1,5 +1,5 @@
 // `testbed check`: the benchmark CI's gate. Compares a current `compare` output against a
-// baseline and exits 3 when anything got slower (relative to `sm`), less accurate, bigger
+// baseline and exits 3 when anything got slower (relative to `sm`), did more work, less accurate, bigger
 // or went missing (testbed/report/regression_check.h).
 #include <cmath>
 #include <filesystem>
@@ -33,7 +33,7 @@ CommandRunner addCheckCommand(CLI::App& app) {
   };
   auto options = std::make_shared<Options>();
   auto* command = app.add_subcommand(
-      "check", "compare a run's metrics.json against a baseline's; exit 3 on speed, accuracy or memory regressions");
+      "check", "compare a run's metrics.json against a baseline's; exit 3 on speed, work, accuracy or memory regressions");
   command->add_option("--baseline", options->baseline, "metrics.json, a compare folder, or a folder of them")
       ->required();
   command->add_option("--current", options->current, "the run to check, same forms as --baseline")->required();
@@ -41,11 +41,15 @@ CommandRunner addCheckCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--error-tolerance", options->tolerances.error, "allowed relative growth of each error metric")
       ->capture_default_str();
+  command->add_option("--work-tolerance", options->tolerances.work,
+                      "allowed relative growth of each pass's work counters (docs/work-counters.md)")
+      ->capture_default_str();
   command->add_option("--out", options->out, "also write the markdown report to this file");
 
   return {command, [options]() {
     checkTolerance("--speed-tolerance", options->tolerances.speed);
     checkTolerance("--error-tolerance", options->tolerances.error);
+    checkTolerance("--work-tolerance", options->tolerances.work);
     // Every input error before anything is written or printed; OutputFiles stages and
     // renames, so a CI never reads a half-written report, and refuses to replace anything
     // but a regular file (--out /dev/null would otherwise become one).

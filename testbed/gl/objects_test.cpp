@@ -187,5 +187,66 @@ TEST_F(GlObjects, PassTimerMeasuresEachScope) {
   EXPECT_THROW(timer.scope("inner"), GlError);
 }
 
+std::uint64_t count(const PassTimes& times, const std::string& pass, std::string_view counter) {
+  for (std::size_t i = 0; i < kWorkCounters.size(); ++i)
+    if (kWorkCounters[i].name == counter) return times.work->passes.at(pass)[i];
+  throw std::logic_error("no work counter " + std::string(counter));
+}
+
+// Known answers: a dispatch of 2×3 groups of 8×8 is 384 compute invocations; one triangle
+// drawn is 3 vertex invocations, 1 primitive, and at least the 64×64 pixels it covers in
+// fragment invocations (a rasterizer may add helpers). Scopes count apart; totals add up.
+TEST_F(GlObjects, PassTimerCountsEachScopesWork) {
+  ASSERT_TRUE(workCountersAvailable()) << "llvmpipe offers ARB_pipeline_statistics_query";
+  static const ShaderRegistration compute("test/count.comp",
+                                          "#version 450 core\nlayout(local_size_x = 8, local_size_y = 8) in;\n"
+                                          "void main() {}\n");
+  static const ShaderRegistration vertex("test/count.vert",
+                                         "#version 450 core\nvoid main() {\n"
+                                         "  vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);\n"
+                                         "  gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);\n}\n");
+  static const ShaderRegistration fragment("test/count.frag",
+                                           "#version 450 core\nout vec4 color;\nvoid main() { color = vec4(1.0); }\n");
+  const Program dispatch = Program::compute("test/count.comp");
+  const Program draw = Program::graphics("test/count.vert", "test/count.frag");
+  Texture target = Texture::create2D(GL_RGBA8, 64, 64);
+  Framebuffer fb = Framebuffer::create();
+  fb.attachColor(0, target);
+  fb.finish({0});
+  VertexArray empty = VertexArray::create();
+
+  PassTimer timer;
+  {
+    auto scope = timer.scope("dispatch");
+    dispatch.use();
+    glDispatchCompute(2, 3, 1);
+  }
+  for (int i = 0; i < 2; ++i) {
+    auto scope = timer.scope("draw");  // a repeated name adds up
+    glBindFramebuffer(GL_FRAMEBUFFER, fb.id());
+    glViewport(0, 0, 64, 64);
+    glBindVertexArray(empty.id());
+    draw.use();
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  const PassTimes times = timer.resolve();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  ASSERT_TRUE(times.work);
+  EXPECT_EQ(count(times, "dispatch", "compute_invocations"), 384u);
+  EXPECT_EQ(count(times, "dispatch", "vertex_invocations"), 0u);
+  EXPECT_EQ(count(times, "dispatch", "fragment_invocations"), 0u);
+  EXPECT_EQ(count(times, "draw", "vertex_invocations"), 6u);
+  EXPECT_EQ(count(times, "draw", "primitives_submitted"), 2u);
+  EXPECT_EQ(count(times, "draw", "compute_invocations"), 0u);
+  EXPECT_GE(count(times, "draw", "fragment_invocations"), 2u * 64 * 64);
+  for (std::size_t i = 0; i < kWorkCounters.size(); ++i)
+    EXPECT_EQ(times.work->total[i], times.work->passes.at("dispatch")[i] + times.work->passes.at("draw")[i]);
+
+  // Not counting is no work block at all, never zeros.
+  PassTimer uncounted(false);
+  { auto scope = uncounted.scope("dispatch"); }
+  EXPECT_FALSE(uncounted.resolve().work);
+}
+
 }  // namespace
 }  // namespace testbed

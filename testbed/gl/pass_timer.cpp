@@ -4,15 +4,24 @@
 
 namespace testbed {
 
-PassTimer::~PassTimer() {
-  if (!pool_.empty()) glDeleteQueries(static_cast<GLsizei>(pool_.size()), pool_.data());
+WorkCounts& operator+=(WorkCounts& sum, const WorkCounts& counts) {
+  for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += counts[i];
+  return sum;
 }
 
-GLuint PassTimer::takeQuery() {
+bool workCountersAvailable() { return GLAD_GL_ARB_pipeline_statistics_query != 0; }
+
+PassTimer::PassTimer(bool countWork) : countWork_(countWork && workCountersAvailable()) {}
+
+PassTimer::~PassTimer() {
+  for (const Slot& slot : pool_) glDeleteQueries(GLsizei(slot.size()), slot.data());
+}
+
+const PassTimer::Slot& PassTimer::takeSlot() {
   if (used_ == pool_.size()) {
-    GLuint query = 0;
-    glGenQueries(1, &query);
-    pool_.push_back(query);
+    Slot slot{};
+    glGenQueries(GLsizei(slot.size()), slot.data());
+    pool_.push_back(slot);
   }
   return pool_[used_++];
 }
@@ -20,15 +29,19 @@ GLuint PassTimer::takeQuery() {
 PassTimer::Scope::Scope(PassTimer& timer, std::string name) : timer_(timer) {
   if (timer.open_) throw GlError("PassTimer: scope '" + name + "' opened inside another scope");
   timer.open_ = true;
-  Entry entry{std::move(name), timer.takeQuery()};
+  Entry entry{std::move(name), timer.takeSlot()};
   glFinish();
   start_ = std::chrono::steady_clock::now();
-  glBeginQuery(GL_TIME_ELAPSED, entry.query);
+  glBeginQuery(GL_TIME_ELAPSED, entry.queries[0]);
+  if (timer.countWork_)
+    for (std::size_t i = 0; i < kWorkCounters.size(); ++i) glBeginQuery(kWorkCounters[i].target, entry.queries[1 + i]);
   timer.entries_.push_back(std::move(entry));
 }
 
 PassTimer::Scope::~Scope() {
   glEndQuery(GL_TIME_ELAPSED);
+  if (timer_.countWork_)
+    for (const WorkCounter& counter : kWorkCounters) glEndQuery(counter.target);
   glFinish();
   timer_.entries_.back().wallMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
@@ -37,15 +50,25 @@ PassTimer::Scope::~Scope() {
 
 PassTimes PassTimer::resolve() {
   PassTimes times;
+  if (countWork_) times.work.emplace();
   for (const Entry& entry : entries_) {
     GLuint64 nanoseconds = 0;
-    glGetQueryObjectui64v(entry.query, GL_QUERY_RESULT, &nanoseconds);
+    glGetQueryObjectui64v(entry.queries[0], GL_QUERY_RESULT, &nanoseconds);
     const double ms = double(nanoseconds) * 1e-6;
     if (!times.passMs.count(entry.name)) times.order.push_back(entry.name);
     times.passMs[entry.name] += ms;
     times.totalMs += ms;
     times.wallPassMs[entry.name] += entry.wallMs;
     times.wallTotalMs += entry.wallMs;
+    if (!times.work) continue;
+    WorkCounts counts{};
+    for (std::size_t i = 0; i < counts.size(); ++i) {
+      GLuint64 count = 0;
+      glGetQueryObjectui64v(entry.queries[1 + i], GL_QUERY_RESULT, &count);
+      counts[i] = count;
+    }
+    times.work->passes[entry.name] += counts;  // a repeated name adds up, as its times do
+    times.work->total += counts;
   }
   entries_.clear();
   used_ = 0;

@@ -13,14 +13,47 @@
 // map of 75k triangles, shadow volumes) reads far too cheap there. Between two glFinish
 // calls a software rasterizer's wall time is all of its work. On a GPU the queries are
 // the measure and wall time includes driver overhead.
+//
+// Each scope also counts its pass's work with pipeline statistics queries
+// (ARB_pipeline_statistics_query): shader invocations and primitives, which llvmpipe counts
+// exactly where its times move ±30 % (docs/work-counters.md). GL allows one active query
+// per target; scopes never nest, so each scope owns one query of each target and a frame's
+// totals are the sums over its scopes. Without the extension there are no counts at all
+// (PassTimes::work empty), never zeros.
+#include <array>
 #include <chrono>
+#include <cstddef>
+#include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "testbed/gl/gl.h"
 
 namespace testbed {
+
+// The work counters: their names in records (docs/work-counters.md) and their query targets.
+struct WorkCounter {
+  std::string_view name;
+  GLenum target;
+};
+inline constexpr std::array<WorkCounter, 5> kWorkCounters = {{
+    {"vertex_invocations", GL_VERTEX_SHADER_INVOCATIONS_ARB},
+    {"fragment_invocations", GL_FRAGMENT_SHADER_INVOCATIONS_ARB},
+    {"compute_invocations", GL_COMPUTE_SHADER_INVOCATIONS_ARB},
+    {"primitives_submitted", GL_PRIMITIVES_SUBMITTED_ARB},
+    {"clipping_input_primitives", GL_CLIPPING_INPUT_PRIMITIVES_ARB},
+}};
+// One count per kWorkCounters entry, in its order.
+using WorkCounts = std::array<std::uint64_t, kWorkCounters.size()>;
+WorkCounts& operator+=(WorkCounts& sum, const WorkCounts& counts);
+
+struct PassWork {
+  WorkCounts total{};                       // the sums over the passes
+  std::map<std::string, WorkCounts> passes;  // by pass name
+};
 
 struct PassTimes {
   double totalMs = 0;
@@ -28,11 +61,16 @@ struct PassTimes {
   double wallTotalMs = 0;
   std::map<std::string, double> wallPassMs;
   std::vector<std::string> order;        // names in first-use order
+  std::optional<PassWork> work;          // empty where the GL has no pipeline statistics
 };
+
+// Whether the current context offers ARB_pipeline_statistics_query.
+bool workCountersAvailable();
 
 class PassTimer {
  public:
-  PassTimer() = default;
+  // Counts work where the context can; `countWork` false leaves PassTimes::work empty.
+  explicit PassTimer(bool countWork = true);
   ~PassTimer();
   PassTimer(const PassTimer&) = delete;
   PassTimer& operator=(const PassTimer&) = delete;
@@ -54,14 +92,18 @@ class PassTimer {
   PassTimes resolve();
 
  private:
+  // A scope's queries: its timer's, then one per work counter. A slot is reused in the same
+  // order every frame, so each query name keeps the one target GL binds it to.
+  using Slot = std::array<GLuint, 1 + kWorkCounters.size()>;
   struct Entry {
     std::string name;
-    GLuint query = 0;
+    Slot queries{};
     double wallMs = 0;
   };
-  GLuint takeQuery();
+  const Slot& takeSlot();
+  bool countWork_;
   std::vector<Entry> entries_;
-  std::vector<GLuint> pool_;
+  std::vector<Slot> pool_;
   std::size_t used_ = 0;
   bool open_ = false;
 };

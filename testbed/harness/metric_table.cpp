@@ -32,6 +32,13 @@ void storeError(Record& r, double value) {
 
 constexpr unsigned kNone = 0;
 
+// A work counter's frame total (the sum over the passes); none where nothing was counted.
+template <std::size_t Counter>
+Value workTotal(const Record& r, const Record*) {
+  return r.work ? Value(double(r.work->total[Counter])) : std::nullopt;
+}
+static_assert(kWorkCounters.size() == 5, "one metric per work counter below");
+
 // Table order is report.md's column order and the order of check's findings.
 const std::vector<Metric> kTable = {
     {"gpu_ms.total", "/gpu_ms/total", "GPU ms (queries)", "", " ms", 2, CheckRule::None, 0, Better::Lower,
@@ -68,6 +75,24 @@ const std::vector<Metric> kTable = {
      [](const Record& r, const Record*) -> Value { return double(r.memoryBytes) / 1024.0; }, nullptr},
     {"memory_mb", "", "memory MB", "", " MB", 2, CheckRule::None, 0, Better::Lower, kSweepMeasure, false, false,
      [](const Record& r, const Record*) -> Value { return double(r.memoryBytes) / (1024.0 * 1024.0); }, nullptr},
+    // The work block's totals (docs/work-counters.md); check compares them pass by pass.
+    {"vertex_invocations", "", "vertex invocations", "", " invocations", 0, CheckRule::Work, 0, Better::Lower,
+     kCounter, true, true, workTotal<0>, nullptr},
+    {"fragment_invocations", "", "fragment invocations", "", " invocations", 0, CheckRule::Work, 0, Better::Lower,
+     kCounter, true, true, workTotal<1>, nullptr},
+    {"compute_invocations", "", "compute invocations", "", " invocations", 0, CheckRule::Work, 0, Better::Lower,
+     kCounter, true, true, workTotal<2>, nullptr},
+    {"primitives_submitted", "", "primitives submitted", "", " primitives", 0, CheckRule::Work, 0, Better::Lower,
+     kCounter, true, true, workTotal<3>, nullptr},
+    {"clipping_input_primitives", "", "clipping input primitives", "", " primitives", 0, CheckRule::Work, 0,
+     Better::Lower, kCounter, true, true, workTotal<4>, nullptr},
+    // The shader invocations of all three stages in thousands: report.md's one work column.
+    {"invocations_k", "", "invocations (k)", "", "k invocations", 1, CheckRule::None, 0, Better::Lower, kReportColumn,
+     false, true,
+     [](const Record& r, const Record*) -> Value {
+       return r.work ? Value(double(r.work->total[0] + r.work->total[1] + r.work->total[2]) / 1000.0) : std::nullopt;
+     },
+     nullptr},
     // The error block (docs/ground-truth-and-metrics.md "Error metrics"); floors: 0.01 percentage
     // points, 0.001 RMSE, 0.01 px.
     {"mismatch_pct", "/error/mismatch_pct", "mismatch %", "mismatch", "%", 3, CheckRule::Error, 0.01, Better::Lower,

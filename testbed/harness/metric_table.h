@@ -22,6 +22,7 @@ enum class CheckRule {
   Error,  // regresses beyond max(--error-tolerance × baseline, floor)
   Speed,  // a ratio to sm: regresses beyond baseline × (1 + --speed-tolerance)
   Exact,  // any change counts (memory is counted exactly by the GL wrappers)
+  Work,   // a work counter: each pass's count regresses beyond baseline × (1 + --work-tolerance)
 };
 
 // Where a metric is shown (bit flags).

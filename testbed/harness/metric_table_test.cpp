@@ -50,6 +50,23 @@ TEST(MetricTable, StoredMetricsAreWhereTheirPathSays) {
   }
 }
 
+// One metric per work counter, named as the record names it, gated pass by pass by check;
+// none where nothing was counted.
+TEST(MetricTable, WorkCountersAreTheWorkBlocksTotals) {
+  Record r = timed("pcf", 1, 1);
+  for (const WorkCounter& counter : kWorkCounters) EXPECT_FALSE(metric(counter.name).value(r, nullptr));
+  EXPECT_FALSE(metric("invocations_k").value(r, nullptr));
+  r.work.emplace();
+  r.work->total = {1000, 20000, 3000, 7, 6};
+  for (std::size_t i = 0; i < kWorkCounters.size(); ++i) {
+    const Metric& m = metric(kWorkCounters[i].name);
+    EXPECT_EQ(m.check, CheckRule::Work);
+    EXPECT_TRUE(m.shownIn(kCounter));
+    EXPECT_EQ(*m.value(r, nullptr), double(r.work->total[i]));
+  }
+  EXPECT_EQ(*metric("invocations_k").value(r, nullptr), 24.0);  // vertex + fragment + compute
+}
+
 TEST(MetricTable, RatiosAreAgainstSmAndTheWholeFrame) {
   const Record sm = timed("sm", 10, 10), smsr = timed("smsr", 30, 10);
   EXPECT_EQ(*metric("x_sm").value(smsr, &sm), 3);

@@ -116,6 +116,37 @@ std::vector<GpuMemoryLedger::Resource> readMemory(const Reader& memory) {
   return out;
 }
 
+// {"vertex_invocations": n, ...}: one count per work counter.
+json countsJson(const WorkCounts& counts) {
+  json out = json::object();
+  for (std::size_t i = 0; i < counts.size(); ++i) out[std::string(kWorkCounters[i].name)] = counts[i];
+  return out;
+}
+
+WorkCounts readCounts(const Reader& r) {
+  WorkCounts counts{};
+  for (std::size_t i = 0; i < counts.size(); ++i) counts[i] = r[kWorkCounters[i].name].count();
+  return counts;
+}
+
+json workJson(const std::optional<PassWork>& work) {
+  if (!work) return nullptr;
+  json passes = json::object();
+  for (const auto& [name, counts] : work->passes) passes[name] = countsJson(counts);
+  return {{"passes", passes}, {"total", countsJson(work->total)}};
+}
+
+std::optional<PassWork> readWork(const Reader& record) {
+  if (!record.has("work") || record["work"].value.is_null()) return std::nullopt;
+  const Reader work = record["work"];
+  PassWork out;
+  const Reader passes = work["passes"];
+  if (!passes.value.is_object()) passes.fail("expected an object of pass counts");
+  for (const auto& [name, counts] : passes.value.items()) out.passes[name] = readCounts(passes[name]);
+  out.total = readCounts(work["total"]);
+  return out;
+}
+
 LightRecord readLight(const Reader& r) {
   LightRecord l;
   l.type = r["type"].text();
@@ -156,6 +187,8 @@ Record read(const Reader& r) {
   out.repeat = int(r["repeat"].count());
   out.triangles = r["triangles"].count();
   out.light = readLight(r["light"]);
+  out.workRecorded = r.has("work");
+  out.work = readWork(r);
   const Reader error = r["error"];
   if (!error.value.is_null() && !error.value.is_object()) error.fail("expected an object or null");
   if (r.has("cell")) out.cell = std::size_t(r["cell"].count());
@@ -204,6 +237,7 @@ Record makeRecord(const TechniqueRun& run, const FrameRunner& runner, const std:
   r.memoryBytes = run.memoryBytes;
   r.memory = run.memory;
   r.path = runner.path();
+  r.work = run.times.work;
   r.light = lightSetupRecord(runner.light(), s.shadowMapSize, s.depthFormat, run.params);
   r.backend = backend;
   return r;
@@ -266,6 +300,7 @@ void to_json(json& out, const Record& r) {
   if (r.cell) out["cell"] = *r.cell;
   if (r.path) out["path"] = std::string(pathName(*r.path));
   if (r.memory) out["memory"] = memoryJson(*r.memory);
+  if (r.workRecorded) out["work"] = workJson(r.work);
   for (const Metric& m : metricTable()) {
     if (m.path.empty() || (inErrorBlock(m) && !r.error)) continue;
     const std::optional<double> v = m.value(r, nullptr);

@@ -42,6 +42,10 @@ struct Record {
   std::optional<std::vector<GpuMemoryLedger::Resource>> memory;
   LightRecord light;
   std::string backend;
+  // The work counters (docs/work-counters.md): "work": null where the GL offers no pipeline
+  // statistics; records made before the counters have no "work" key (workRecorded false).
+  std::optional<PassWork> work;
+  bool workRecorded = true;
   std::optional<ErrorMetrics> error;  // null until compared with the ground truth
   std::optional<std::size_t> cell;    // a sweep's cell index (records.json only)
 

@@ -96,6 +96,33 @@ TEST(Record, ErrorBlockHasExactlyTheContractKeys) {
   EXPECT_FALSE(json(r).get<Record>().error.has_value());
 }
 
+// The work block: counts per pass and their sums; null where the GL has no pipeline
+// statistics (never zeros); no key at all in records made before the counters.
+TEST(Record, WorkBlockIsCountsNullOrAbsent) {
+  const json j = baselineRecord("sm");
+  Record r = j.get<Record>();
+  ASSERT_TRUE(r.work) << "tests/baselines carry work counts (scripts/baselines.sh)";
+  EXPECT_EQ(r.work->passes.size(), j["gpu_ms"]["passes"].size());
+  WorkCounts sum{};
+  for (const auto& [name, counts] : r.work->passes) sum += counts;
+  EXPECT_EQ(r.work->total, sum);
+  EXPECT_EQ(r.work->total[1], j["work"]["total"]["fragment_invocations"].get<std::uint64_t>());
+
+  r.work.reset();
+  const json uncounted = r;
+  EXPECT_TRUE(uncounted.at("work").is_null());
+  const Record back = uncounted.get<Record>();
+  EXPECT_FALSE(back.work);
+  EXPECT_TRUE(back.workRecorded);
+
+  json old = j;
+  old.erase("work");
+  const Record before = old.get<Record>();
+  EXPECT_FALSE(before.work);
+  EXPECT_FALSE(before.workRecorded);
+  EXPECT_FALSE(json(before).contains("work"));
+}
+
 TEST(Record, MalformedRecordsNameTheField) {
   auto message = [](const json& j) {
     return test::inputErrorOf([&] { readRecord(j, "runs/x.json: [4]"); }).value_or("accepted");

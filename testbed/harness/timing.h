@@ -23,7 +23,8 @@ double median(std::vector<double> values);
 
 // The figures of several timed frames: each pass's median, and as each measure's total the
 // sum of those medians, so that a record's total is the sum of its passes (docs/record.md
-// "The record") whatever the number of frames. `order` is the first frame's.
+// "The record") whatever the number of frames. `order` is the first frame's. Work counts: each
+// pass's median count, totals their sums; none unless every frame has them.
 PassTimes medianPassTimes(const std::vector<PassTimes>& frames);
 
 }  // namespace testbed

@@ -30,6 +30,30 @@ TEST(Timing, TotalIsTheSumOfThePassMedians) {
   EXPECT_EQ(one.passMs.at("visibility"), 3.5);
 }
 
+PassTimes counted(std::uint64_t shadowMapFragments, std::uint64_t visibilityFragments) {
+  PassTimes t = frame(1, 1);
+  t.work.emplace();
+  t.work->passes["shadow-map"][1] = shadowMapFragments;
+  t.work->passes["visibility"][1] = visibilityFragments;
+  t.work->passes["visibility"][0] = 4;
+  t.work->total = t.work->passes["shadow-map"];
+  t.work->total += t.work->passes["visibility"];
+  return t;
+}
+
+// Work counts: each pass's median is a count some frame had (the lower middle of an even
+// number), totals are the sums of the pass medians.
+TEST(Timing, WorkCountsAreMediansPerPassSummed) {
+  const PassTimes m = medianPassTimes({counted(10, 7), counted(30, 5), counted(20, 9), counted(40, 1)});
+  ASSERT_TRUE(m.work);
+  EXPECT_EQ(m.work->passes.at("shadow-map")[1], 20u);
+  EXPECT_EQ(m.work->passes.at("visibility")[1], 5u);
+  EXPECT_EQ(m.work->total[1], 25u);
+  EXPECT_EQ(m.work->total[0], 4u);
+  // A frame without counts (no pipeline statistics): no work block, not zeros.
+  EXPECT_FALSE(medianPassTimes({counted(1, 1), frame(1, 1)}).work);
+}
+
 TEST(Timing, MedianOfAnEvenCountIsTheMiddlesMean) {
   EXPECT_EQ(median({4, 1, 3, 2}), 2.5);
   EXPECT_EQ(median({7}), 7);

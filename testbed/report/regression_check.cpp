@@ -49,6 +49,7 @@ std::string findingLine(const Finding& f) {
   line << "- " << label(*f.record) << ": ";
   if (f.kind == FindingKind::New) return line.str() + "new, not in the baseline\n";
   if (!f.metric) return line.str() + "missing from the current run\n";
+  if (!f.pass.empty()) line << "pass `" << f.pass << "` ";
   line << f.metric->name;
   if (f.metric->check == CheckRule::Speed) line << " (" << timingName(f.record->record.timing) << " time × sm)";
   line << " " << formatValue(*f.metric, f.baseline) << " → " << formatValue(*f.metric, f.current);
@@ -76,6 +77,38 @@ std::string whyNoRatio(const CheckRecord& b, const CheckRecord& c) {
 
 void addNote(CheckReport& report, const std::string& note) {
   if (std::find(report.notes.begin(), report.notes.end(), note) == report.notes.end()) report.notes.push_back(note);
+}
+
+// Why two matched records' work counts are not compared, as a note; empty when they are.
+std::string whyNoWork(const CheckRecord& b, const CheckRecord& c) {
+  if (b.record.backend != c.record.backend)
+    return "work not compared: the backends differ (baseline `" + b.record.backend + "`, current `" +
+           c.record.backend + "`); another rasterizer counts other work.";
+  // One note per reason, not per record: a baseline from before the counters lacks them all.
+  for (const CheckRecord* r : {&b, &c})
+    if (!r->record.work)
+      return r->record.workRecorded
+                 ? "work not compared for records whose GL offered no pipeline statistics (`\"work\": null`)."
+                 : "work not compared for records made before the work counters (no `work` key): refresh the "
+                   "baseline with scripts/baselines.sh.";
+  return "";
+}
+
+// Each pass's count of each work counter: a pass new in `current` counts from 0, one gone
+// from it counts 0, so renaming a pass regresses until the baseline is refreshed.
+void compareWork(CheckReport& report, const CheckRecord& b, const CheckRecord& c, double tolerance) {
+  std::map<std::string, std::pair<WorkCounts, WorkCounts>> passes;  // name → (baseline, current)
+  for (const auto& [name, counts] : b.record.work->passes) passes[name].first = counts;
+  for (const auto& [name, counts] : c.record.work->passes) passes[name].second = counts;
+  for (const auto& [name, counts] : passes)
+    for (std::size_t i = 0; i < kWorkCounters.size(); ++i) {
+      const double before = double(counts.first[i]), now = double(counts.second[i]);
+      const Metric& m = metric(kWorkCounters[i].name);
+      if (now > before * (1 + tolerance))
+        report.findings.push_back({FindingKind::Regression, &c, &m, before, now, name});
+      else if (now * (1 + tolerance) < before)
+        report.findings.push_back({FindingKind::Improvement, &c, &m, before, now, name});
+    }
 }
 
 std::string plural(int n, const char* word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); }
@@ -153,14 +186,14 @@ CheckReport compareRecords(const std::vector<CheckRecord>& baseline, const std::
   // A change beyond `slack` in the metric's worse direction regresses, in its better one improves.
   auto judge = [&](const CheckRecord& c, const Metric& metric, double b, double now, double slack) {
     const double gain = metric.better == Better::Lower ? b - now : now - b;
-    if (gain < -slack) report.findings.push_back({FindingKind::Regression, &c, &metric, b, now});
-    else if (gain > slack) report.findings.push_back({FindingKind::Improvement, &c, &metric, b, now});
+    if (gain < -slack) report.findings.push_back({FindingKind::Regression, &c, &metric, b, now, {}});
+    else if (gain > slack) report.findings.push_back({FindingKind::Improvement, &c, &metric, b, now, {}});
   };
 
   for (const auto& b : baseline) {
     const auto it = byKey.find(b.key());
     if (it == byKey.end()) {
-      report.findings.push_back({FindingKind::Regression, &b, nullptr, 0, 0});
+      report.findings.push_back({FindingKind::Regression, &b, nullptr, 0, 0, {}});
       continue;
     }
     const CheckRecord& c = *it->second;
@@ -191,11 +224,16 @@ CheckReport compareRecords(const std::vector<CheckRecord>& baseline, const std::
         // A ratio above baseline × (1 + tol) is slower; below baseline / (1 + tol) faster (symmetric).
         const double bRatio = *b.smRatio, cRatio = *c.smRatio;
         if (cRatio > bRatio * (1 + tolerances.speed))
-          report.findings.push_back({FindingKind::Regression, &c, &speedMetric(), bRatio, cRatio});
+          report.findings.push_back({FindingKind::Regression, &c, &speedMetric(), bRatio, cRatio, {}});
         else if (cRatio * (1 + tolerances.speed) < bRatio)
-          report.findings.push_back({FindingKind::Improvement, &c, &speedMetric(), bRatio, cRatio});
+          report.findings.push_back({FindingKind::Improvement, &c, &speedMetric(), bRatio, cRatio, {}});
       }
     }
+
+    if (const std::string why = whyNoWork(b, c); !why.empty())
+      addNote(report, why);
+    else
+      compareWork(report, b, c, tolerances.work);
 
     // Memory is counted exactly by the GL wrappers, so any increase is real.
     for (const Metric& m : metricTable())
@@ -204,7 +242,7 @@ CheckReport compareRecords(const std::vector<CheckRecord>& baseline, const std::
           judge(c, m, *before, *now, 0.0);
   }
   for (const auto& c : current)
-    if (!matched.count(c.key())) report.findings.push_back({FindingKind::New, &c, nullptr, 0, 0});
+    if (!matched.count(c.key())) report.findings.push_back({FindingKind::New, &c, nullptr, 0, 0, {}});
   return report;
 }
 
@@ -223,9 +261,9 @@ std::string checkReportMarkdown(const CheckReport& report, const CheckTolerances
     md << "\n## Notes\n\n";
     for (const auto& note : report.notes) md << "- " << note << "\n";
   }
-  char tolerance[96];
-  std::snprintf(tolerance, sizeof tolerance, "speed tolerance %g%%, error tolerance %g%%", tolerances.speed * 100,
-                tolerances.error * 100);
+  char tolerance[128];
+  std::snprintf(tolerance, sizeof tolerance, "speed tolerance %g%%, error tolerance %g%%, work tolerance %g%%",
+                tolerances.speed * 100, tolerances.error * 100, tolerances.work * 100);
   md << "\n**" << (report.failed() ? "FAIL" : "PASS") << "**: "
      << plural(report.count(FindingKind::Regression), "regression") << ", "
      << plural(report.count(FindingKind::Improvement), "improvement") << ", "

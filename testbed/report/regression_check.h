@@ -39,6 +39,9 @@ std::vector<CheckRecord> loadCheckRecords(const std::filesystem::path& path, con
 struct CheckTolerances {
   double speed = 0.25;  // relative, on the ratio to `sm`
   double error = 0.05;  // relative, with an absolute floor per metric (Metric::floor)
+  // Relative, per pass and work counter. 0: llvmpipe's counts repeat exactly across runs
+  // and thread counts (docs/work-counters.md), so any rise is more work.
+  double work = 0.0;
 };
 
 enum class FindingKind { Regression, Improvement, New };
@@ -48,6 +51,7 @@ struct Finding {
   const CheckRecord* record;  // the current one; the baseline's for a missing record
   const Metric* metric;       // null for a missing or a new record
   double baseline = 0, current = 0;
+  std::string pass;  // a work counter's pass; empty for every other metric
 };
 
 struct CheckReport {

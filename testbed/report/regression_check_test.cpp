@@ -10,9 +10,17 @@ namespace {
 
 using nlohmann::json;
 
+// A work block: a shadow-map and a visibility pass, each counting 1000 of everything.
+json work() {
+  json counts = json::object();
+  for (const WorkCounter& counter : kWorkCounters) counts[std::string(counter.name)] = 1000;
+  return {{"passes", {{"shadow-map", counts}, {"visibility", counts}}}, {"total", counts}};
+}
+
 // A compare record of `technique` on bunny at 512² (docs/record.md "The record").
 json record(const std::string& technique, double wallMs = 20.0, double mismatch = 0.5) {
   return {{"technique", technique},
+          {"work", work()},
           {"scene", "bunny"},
           {"size", {1280, 720}},
           {"shadow_map", 512},
@@ -69,6 +77,12 @@ std::vector<std::string> findings(const Checked& c, FindingKind kind) {
 }
 
 using Names = std::vector<std::string>;
+
+bool hasNote(const Checked& c, const std::string& part) {
+  for (const auto& note : c.report.notes)
+    if (note.find(part) != std::string::npos) return true;
+  return false;
+}
 
 TEST(RegressionCheck, IdenticalRunsHaveNoFindings) {
   const Checked c = check(run(), run());
@@ -153,8 +167,9 @@ TEST(RegressionCheck, DifferentBackendsSkipSpeedButCheckAccuracy) {
   current[2]["error"]["rmse"] = 0.1;
   const Checked c = check(run(), current);
   EXPECT_EQ(findings(c, FindingKind::Regression), Names{"pcf rmse"});
-  ASSERT_EQ(c.report.notes.size(), 1u);
-  EXPECT_NE(c.report.notes[0].find("backends differ"), std::string::npos);
+  ASSERT_EQ(c.report.notes.size(), 2u);  // speed and work, each once for the whole run
+  EXPECT_TRUE(hasNote(c, "speed not compared: the backends differ"));
+  EXPECT_TRUE(hasNote(c, "work not compared: the backends differ"));
   EXPECT_NE(checkReportMarkdown(c.report, {}).find("egl: NVIDIA H100"), std::string::npos);
 }
 
@@ -186,6 +201,71 @@ TEST(RegressionCheck, MissingRecordIsARegressionNewOneIsNot) {
   EXPECT_FALSE(check(run(), current).report.failed());
 }
 
+TEST(RegressionCheck, WorkCountersUnchangedPass) {
+  const Checked c = check(run(), run());
+  EXPECT_TRUE(c.report.findings.empty());
+  EXPECT_TRUE(c.report.notes.empty()) << c.report.notes.front();
+}
+
+// The planted regression: pcf's shadow-map pass does 1 more fragment invocation than its
+// baseline (a lowered baseline count) — with the default tolerance 0, any rise fails.
+TEST(RegressionCheck, AnyRiseOfAWorkCounterInAnyPassFails) {
+  json baseline = run();
+  baseline[2]["work"]["passes"]["shadow-map"]["fragment_invocations"] = 999;
+  const Checked c = check(baseline, run());
+  EXPECT_TRUE(c.report.failed());
+  EXPECT_EQ(findings(c, FindingKind::Regression), (Names{"pcf fragment_invocations"}));
+  EXPECT_EQ(c.report.findings.front().pass, "shadow-map");
+  const std::string md = checkReportMarkdown(c.report, {});
+  EXPECT_NE(md.find("- bunny · pcf · 512² (1280×720, depth 16): pass `shadow-map` fragment_invocations 999 → 1000 (+0.1%)"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("work tolerance 0%"), std::string::npos) << md;
+  // Within a stated tolerance it passes; a fall is an improvement.
+  EXPECT_FALSE(check(baseline, run(), {.work = 0.01}).report.failed());
+  const Checked fewer = check(run(), baseline);
+  EXPECT_FALSE(fewer.report.failed());
+  EXPECT_EQ(findings(fewer, FindingKind::Improvement), (Names{"pcf fragment_invocations"}));
+}
+
+// A pass new in the current run counts from 0: its work is a rise.
+TEST(RegressionCheck, ANewPassIsMoreWork) {
+  json current = run();
+  current[3]["work"]["passes"]["blur"] = current[3]["work"]["passes"]["visibility"];
+  const Checked c = check(run(), current);
+  EXPECT_EQ(findings(c, FindingKind::Regression).size(), kWorkCounters.size());
+  EXPECT_EQ(c.report.findings.front().pass, "blur");
+  EXPECT_EQ(c.report.findings.front().record->record.technique, "vsm");
+}
+
+// No counts is never zero counts: records without a work block, or from another backend,
+// are not compared, and the report says why.
+TEST(RegressionCheck, WorkIsNotComparedWithoutCountsOrAcrossBackends) {
+  json current = run();
+  current[2]["work"] = nullptr;
+  const Checked missing = check(run(), current);
+  EXPECT_FALSE(missing.report.failed());
+  ASSERT_EQ(missing.report.notes.size(), 1u);
+  EXPECT_NE(missing.report.notes[0].find("work not compared for records whose GL offered no pipeline statistics"),
+            std::string::npos);
+
+  json other = run();
+  for (auto& r : other) {
+    r["backend"] = "egl: NVIDIA";
+    r["work"]["passes"]["visibility"]["vertex_invocations"] = 5000;
+  }
+  const Checked moved = check(run(), other);
+  EXPECT_FALSE(moved.report.failed());
+  EXPECT_TRUE(hasNote(moved, "another rasterizer counts other work"));
+
+  json old = run();
+  for (auto& r : old) r.erase("work");
+  const Checked before = check(old, run());
+  EXPECT_FALSE(before.report.failed());
+  ASSERT_EQ(before.report.notes.size(), 1u);  // once, not once per record
+  EXPECT_NE(before.report.notes[0].find("made before the work counters"), std::string::npos);
+}
+
 TEST(RegressionCheck, MalformedRecordsNameTheFileAndField) {
   auto message = [](const json& records) {
     return test::inputErrorOf([&] { parseCheckRecords(records, "runs/metrics.json"); }).value_or("accepted");
@@ -212,6 +292,12 @@ TEST(RegressionCheck, MalformedRecordsNameTheFileAndField) {
   r[3]["memory_bytes"] = -1;
   EXPECT_EQ(message(r), "runs/metrics.json: [3].memory_bytes: expected a non-negative integer");
   EXPECT_NE(message(json::object()).find("expected a JSON array"), std::string::npos);
+  r = run();
+  r[1]["work"]["passes"]["visibility"].erase("compute_invocations");
+  EXPECT_EQ(message(r), "runs/metrics.json: [1].work.passes.visibility.compute_invocations: missing");
+  r = run();
+  r[1]["work"]["total"]["vertex_invocations"] = -3;
+  EXPECT_EQ(message(r), "runs/metrics.json: [1].work.total.vertex_invocations: expected a non-negative integer");
 }
 
 }  // namespace

@@ -30,6 +30,36 @@ void passRow(std::ostringstream& md, const Record& r) {
   md << " |\n";
 }
 
+// Rows of "Work per pass": the technique's pipeline statistics pass by pass, by pass name.
+void workRows(std::ostringstream& md, const Record& r) {
+  if (!r.work) return;
+  for (const auto& [name, counts] : r.work->passes) {
+    md << "| `" << r.technique << "` | " << name << " |";
+    for (const std::uint64_t count : counts) md << " " << count << " |";
+    md << "\n";
+  }
+}
+
+void workSection(std::ostringstream& md, const Comparison& c) {
+  md << "\n## Work per pass\n\n";
+  if (!baselineRecord(c).work) {
+    md << "Not counted: the GL (" << baselineRecord(c).backend
+       << ") offers no pipeline statistics (ARB_pipeline_statistics_query).\n";
+    return;
+  }
+  md << "Pipeline statistics of a frame (docs/work-counters.md; with --repeat, each pass's median): exact on "
+        "llvmpipe, where times are not.\n\n"
+     << "| technique | pass |";
+  std::string rule = "|---|---|";
+  for (const WorkCounter& counter : kWorkCounters) {
+    md << " " << counter.name << " |";
+    rule += "---:|";
+  }
+  md << "\n" << rule << "\n";
+  for (const auto& entry : c.entries) workRows(md, entry.record);
+  workRows(md, c.groundTruth);
+}
+
 }  // namespace
 
 const Record& baselineRecord(const Comparison& comparison) { return comparison.entries.front().record; }
@@ -72,6 +102,7 @@ std::string reportMarkdown(const Comparison& c) {
      << "| technique | ms | passes |\n|---|---:|---|\n";
   for (const auto& entry : c.entries) passRow(md, entry.record);
   passRow(md, gt);
+  workSection(md, c);
   md << "\n![grid](grid.png)\n\n![speed against error](speed_vs_error.svg)\n";
   return md.str();
 }

@@ -42,7 +42,7 @@ TEST(ReportMarkdown, GivesTheTechniqueOnlyAndTheWholeFrameRatio) {
   EXPECT_EQ(rowOf(md, "sm").rfind("| `sm` | 10.00 | 10.00 | 1.00 | 1.00 | 1 |", 0), 0u) << rowOf(md, "sm");
   // Without an error block every error column reads "–".
   EXPECT_NE(rowOf(md, "sm").find("| 1 | – | – | – | – | – | – | – | – |"), std::string::npos) << rowOf(md, "sm");
-  EXPECT_NE(md.find("| technique | GPU ms (queries) | wall ms | × sm | × sm frame | memory KiB | mismatch % | edge mismatch % "
+  EXPECT_NE(md.find("| technique | GPU ms (queries) | wall ms | × sm | × sm frame | memory KiB | invocations (k) | mismatch % | edge mismatch % "
                     "| RMSE | leak % | overestimation % | boundary px mean | boundary px p95 | soft RMSE |\n|---|---:|"),
             std::string::npos)
       << md;
@@ -70,6 +70,39 @@ TEST(ReportMarkdown, SaysWhereEachTechniquesTimeGoesLongestPassFirst) {
       << md;
   EXPECT_NE(md.find("| `groundtruth` | 30.00 | volumes 24.00 (80 %) · visibility 6.00 (20 %) |", section), std::string::npos)
       << md;
+}
+
+// "Work per pass": every counter of every pass, the ground truth's too; the main table's
+// invocations column sums the three shader stages. Not counted is said, not zeros.
+TEST(ReportMarkdown, ListsEachPassesWorkCounters) {
+  Comparison c;
+  c.scene = "test";
+  c.groundTruth = record("groundtruth", 30.0, 10.0);
+  c.entries.push_back({record("sm", 10.0, 10.0), {}, {}, {}});
+  const std::string uncounted = reportMarkdown(c);
+  EXPECT_NE(uncounted.find("Not counted: the GL (osmesa: test) offers no pipeline statistics"), std::string::npos)
+      << uncounted;
+  EXPECT_NE(rowOf(uncounted, "sm").find("| 1 | – |"), std::string::npos) << rowOf(uncounted, "sm");
+
+  for (Record* r : {&c.entries[0].record, &c.groundTruth}) {
+    r->work.emplace();
+    r->work->passes["visibility"] = {3, 1500, 0, 1, 1};
+    r->work->total = r->work->passes["visibility"];
+  }
+  c.entries[0].record.work->passes["shadow-map"] = {2958, 53248, 0, 986, 986};
+  c.entries[0].record.work->total += c.entries[0].record.work->passes["shadow-map"];
+  const std::string md = reportMarkdown(c);
+  const auto section = md.find("## Work per pass");
+  ASSERT_NE(section, std::string::npos) << md;
+  EXPECT_NE(md.find("| technique | pass | vertex_invocations | fragment_invocations | compute_invocations | "
+                    "primitives_submitted | clipping_input_primitives |",
+                    section),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| `sm` | shadow-map | 2958 | 53248 | 0 | 986 | 986 |", section), std::string::npos) << md;
+  EXPECT_NE(md.find("| `sm` | visibility | 3 | 1500 | 0 | 1 | 1 |", section), std::string::npos) << md;
+  EXPECT_NE(md.find("| `groundtruth` | visibility | 3 | 1500 | 0 | 1 | 1 |", section), std::string::npos) << md;
+  EXPECT_NE(rowOf(md, "sm").find("| 1 | 57.7 |"), std::string::npos) << rowOf(md, "sm");  // (2961 + 54748) / 1000
 }
 
 }  // namespace
