@@ -81,8 +81,11 @@ VideoWriter::VideoWriter(std::filesystem::path path, int width, int height, int 
                                 " at " + std::to_string(fps) + " fps, expected positive values");
   row_.resize(std::size_t(width) * 3);
 
-  std::string pattern =
-      (path_.parent_path() / ("." + path_.filename().string() + ".XXXXXX")).string();
+  // Appended piecewise: `"." + string` trips GCC 12's -Wrestrict false positive.
+  std::string hidden = ".";
+  hidden += path_.filename().string();
+  hidden += ".XXXXXX";
+  std::string pattern = (path_.parent_path() / hidden).string();
   const int tempFd = ::mkstemp(pattern.data());
   if (tempFd < 0) throw std::runtime_error(name + ": cannot create a temporary beside it: " + errnoText(errno));
   // Only the name is reserved: ffmpeg creates the file anew, with the umask's mode rather
