@@ -5,8 +5,8 @@
 Input: a JSON list of per-frame records, each with "technique", "frame" and the "error"
 block of a metrics.json record (mismatch_pct, rmse, boundary_px.mean), and, from the
 second frame of a run on, "temporal": {"flicker": ...} for the pair (previous frame,
-this frame). Left axis: mismatch %, RMSE and boundary px over frames; right axis: flicker
-per frame pair. Uses Debian's python3-matplotlib.
+this frame). Panels: mismatch %, RMSE and boundary px over frames; the top one's second
+axis: flicker per frame pair (plotted at the pair's later frame). Uses Debian's python3-matplotlib.
 
 Usage: motion_plot.py SERIES.json [OUTPUT_FOLDER]   (default: SERIES.json's folder)
 Bad input: one line naming the file and the key path on stderr, exit 2, nothing written."""
@@ -74,21 +74,21 @@ def read_series(path):
 
 
 def plot(technique, points, out_file):
+    """One panel per error series (their units differ), frames shared; the top panel
+    carries the flicker per frame pair on its second axis."""
     frames = [p[0] for p in points]
-    figure, left = plt.subplots(figsize=(8, 4.5), dpi=100)
-    for _, label, style in ERROR_SERIES:
-        left.plot(frames, [p[1][label] for p in points], style, label=label)
-    left.set_xlabel("frame")
-    left.set_ylabel("per-frame error")
-    left.grid(alpha=0.3)
-    right = left.twinx()
+    figure, axes = plt.subplots(len(ERROR_SERIES), 1, sharex=True, figsize=(8, 6.5), dpi=100)
+    for axis, (_, label, style) in zip(axes, ERROR_SERIES):
+        axis.plot(frames, [p[1][label] for p in points], style, color="tab:blue", marker=".", label=label)
+        axis.set_ylabel(label, color="tab:blue")
+        axis.grid(alpha=0.3)
+    axes[-1].set_xlabel("frame")
+    axes[-1].xaxis.get_major_locator().set_params(integer=True)
+    flicker_axis = axes[0].twinx()
     pairs = [(p[0], p[2]) for p in points if p[2] is not None]
-    right.plot([f for f, _ in pairs], [v for _, v in pairs], "-", color="tab:red", marker=".", label="flicker")
-    right.set_ylabel("flicker per frame pair", color="tab:red")
-    lines = left.get_legend_handles_labels()
-    more = right.get_legend_handles_labels()
-    left.legend(lines[0] + more[0], lines[1] + more[1], loc="upper left", fontsize=8)
-    left.set_title(technique + ": error over time", fontsize=10)
+    flicker_axis.plot([f for f, _ in pairs], [v for _, v in pairs], "-", color="tab:red", marker=".")
+    flicker_axis.set_ylabel("flicker (frame pair)", color="tab:red")
+    axes[0].set_title(technique + ": error over time", fontsize=10)
     figure.tight_layout()
     # Rendered beside the final name and moved into place, so no half-written PNG is left.
     temporary = os.path.join(os.path.dirname(out_file) or ".", "." + os.path.basename(out_file) + ".partial")

@@ -81,8 +81,11 @@ VideoWriter::VideoWriter(std::filesystem::path path, int width, int height, int 
                                 " at " + std::to_string(fps) + " fps, expected positive values");
   row_.resize(std::size_t(width) * 3);
 
-  std::string pattern =
-      (path_.parent_path() / ("." + path_.filename().string() + ".XXXXXX")).string();
+  // Appended piecewise: `"." + string` trips GCC 12's -Wrestrict false positive.
+  std::string hidden = ".";
+  hidden += path_.filename().string();
+  hidden += ".XXXXXX";
+  std::string pattern = (path_.parent_path() / hidden).string();
   const int tempFd = ::mkstemp(pattern.data());
   if (tempFd < 0) throw std::runtime_error(name + ": cannot create a temporary beside it: " + errnoText(errno));
   // Only the name is reserved: ffmpeg creates the file anew, with the umask's mode rather
@@ -110,8 +113,12 @@ VideoWriter::VideoWriter(std::filesystem::path path, int width, int height, int 
   const std::vector<std::string> args = {
       options.ffmpeg, "-hide_banner", "-loglevel", "error", "-y",
       "-f", "rawvideo", "-pix_fmt", "rgb24", "-s", size, "-r", std::to_string(fps), "-i", "pipe:0",
-      "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-c:v", "libx264", "-crf", std::to_string(options.crf),
-      "-pix_fmt", "yuv420p", "-movflags", "+faststart", "-f", "mp4", temporary_.string()};
+      // Converted with BT.709 and tagged so: players (browsers, ffmpeg) then decode with the
+      // matrix the encoder used; untagged, a BT.601 encode shifts colours by ~10 levels.
+      "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2,scale=out_color_matrix=bt709:out_range=tv",
+      "-colorspace", "bt709", "-color_primaries", "bt709", "-color_trc", "bt709",
+      "-c:v", "libx264", "-crf", std::to_string(options.crf), "-pix_fmt", "yuv420p",
+      "-movflags", "+faststart", "-f", "mp4", temporary_.string()};
   std::vector<char*> argv;
   for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);

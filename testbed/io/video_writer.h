@@ -1,7 +1,7 @@
 #pragma once
 // A video file written frame by frame through Debian's ffmpeg: H.264 (libx264) in MP4,
-// yuv420p and even dimensions (an odd side is padded by one black row or column), moov
-// atom first (+faststart), so that browsers play it. Frames are piped to ffmpeg as raw
+// yuv420p (BT.709, tagged) and even dimensions (an odd side is padded by one black row or
+// column), moov atom first (+faststart), so that browsers play it. Frames are piped to ffmpeg as raw
 // rgb24 as they come; nothing but one row is held.
 //
 // The file appears whole or not at all: ffmpeg writes a hidden temporary beside it

@@ -31,7 +31,7 @@ ImageF frame(int w, int h, int t) {
 
 nlohmann::json probe(const fs::path& file) {
   const RunResult r = runCommand({"ffprobe", "-v", "error", "-select_streams", "v:0", "-count_frames", "-show_entries",
-                                  "stream=codec_name,width,height,pix_fmt,nb_read_frames", "-of", "json", file.string()});
+                                  "stream=codec_name,width,height,pix_fmt,color_space,nb_read_frames", "-of", "json", file.string()});
   EXPECT_EQ(r.exitCode, 0) << r.describe();
   return nlohmann::json::parse(r.out).at("streams").at(0);
 }
@@ -50,6 +50,7 @@ TEST(VideoWriter, WritesH264Mp4ThatBrowsersPlay) {
   const nlohmann::json stream = probe(file);
   EXPECT_EQ(stream.at("codec_name"), "h264");
   EXPECT_EQ(stream.at("pix_fmt"), "yuv420p");
+  EXPECT_EQ(stream.at("color_space"), "bt709");
   EXPECT_EQ(stream.at("width"), 34);
   EXPECT_EQ(stream.at("height"), 18);
   EXPECT_EQ(stream.at("nb_read_frames"), "5");
@@ -60,7 +61,8 @@ TEST(VideoWriter, WritesH264Mp4ThatBrowsersPlay) {
   ASSERT_NE(mdat, std::string::npos);
   EXPECT_LT(moov, mdat) << "+faststart puts the index first, so playback starts before the download ends";
 
-  // The first frame decoded back: rows top-down, values quantized as PNGs are (0.5 -> 128).
+  // The first frame decoded back: rows top-down, values quantized as PNGs are (0.5 -> 128),
+  // within 8 levels (an untagged BT.601 encode reads back 140 for 128).
   const RunResult decoded = runCommand({"ffmpeg", "-v", "error", "-i", file.string(), "-frames:v", "1", "-f",
                                         "rawvideo", "-pix_fmt", "rgb24", "-"});
   ASSERT_EQ(decoded.exitCode, 0) << decoded.describe();
