@@ -57,9 +57,10 @@ void MomentsPass::updateFarTexel(const MomentsFormat& format, const glm::vec4& p
 TexelRect MomentsPass::sampled(const FrameInputs& in) {
   const int n = in.shadowMapSize;
   if (parameters_.mips) return {glm::ivec2(0), glm::ivec2(n - 1)};
-  if (boxesScene_ != &in.scene) {
+  if (boxesScene_ != &in.scene || boxesRevision_ != in.scene.geometryRevision) {
     boxes_ = objectBoxes(in.scene);
     boxesScene_ = &in.scene;
+    boxesRevision_ = in.scene.geometryRevision;
   }
   return sampledTexels(boxes_, in.camera.viewProjection(), in.light, n, kSampledMargin);
 }

@@ -14,6 +14,7 @@
 // both cover it.
 // Parameters `blur` (odd kernel size, 1 = none) and `mips` are declared here once; each
 // technique reflects them after its own.
+#include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -73,6 +74,7 @@ class MomentsPass {
   glm::vec4 far_{0.0f};  // the texel, as the clear colour
   std::vector<WorldBox> boxes_;  // of boxesScene_'s objects
   const Scene* boxesScene_ = nullptr;
+  std::uint64_t boxesRevision_ = 0;  // boxesScene_'s geometryRevision: objects moved since
 };
 
 }  // namespace testbed

@@ -66,10 +66,12 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
     // 16-bit unorm offsets in the texel: 1/65535 of a texel, the notes ask for ≥ fp16.
     GpuMemoryLedger::Label label("silhouette-map", ResourceRole::Paper);
     silhouettes_.ensure({.size = glm::ivec2(side), .color = GL_RG16});
-    if (topologyScene_ != &in.scene || topology_.size() != in.scene.objects.size()) {
+    if (topologyScene_ != &in.scene || topologyRevision_ != in.scene.geometryRevision ||
+        topology_.size() != in.scene.objects.size()) {
       topology_.clear();
       for (const auto& object : in.scene.objects) topology_.push_back(meshTopology(object.mesh));
       topologyScene_ = &in.scene;
+      topologyRevision_ = in.scene.geometryRevision;
     }
   }
 
@@ -136,6 +138,7 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
   std::vector<glm::vec4> endpoints_;
   std::vector<MeshTopology> topology_;
   const Scene* topologyScene_ = nullptr;
+  std::uint64_t topologyRevision_ = 0;  // topologyScene_'s geometryRevision: objects moved since
 };
 
 TESTBED_REGISTER_TECHNIQUE(SilhouetteMap, .id = "silhouette-map", .output = OutputKind::Hard,
