@@ -48,8 +48,11 @@ ParameterSet parametersOf(const SweepCell& cell) {
 void warmUpGBuffer(const RenderSettings& settings) {
   Scene scene;
   scene.name = "warm-up";
-  scene.objects.push_back({"warm-up plane", makePlane(1, 1)});
-  FrameRunner warm(scene, {{16, 16}, 16, settings.depthFormat, 1});
+  SceneObject plane;
+  plane.label = "warm-up plane";
+  plane.mesh = makePlane(1, 1);
+  scene.objects.push_back(std::move(plane));
+  FrameRunner warm(scene, {{16, 16}, 16, settings.depthFormat, 1, std::nullopt});
 }
 
 }  // namespace
@@ -102,7 +105,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
     const std::string backend = context->description();
     for (const auto& key : frames) {
       const SweepCell& c = plan.cells[owned[key].front()];
-      validateSettings({parseSize(c.size), c.shadowMap, parseDepthFormat(c.depthFormat), plan.repeat});
+      validateSettings({parseSize(c.size), c.shadowMap, parseDepthFormat(c.depthFormat), plan.repeat, std::nullopt});
     }
     const std::vector<std::size_t> figure = figureCells(spec, plan);
     const std::set<std::size_t> figureSet(figure.begin(), figure.end());
