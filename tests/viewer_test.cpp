@@ -297,7 +297,7 @@ TEST(ViewerBadInput, ExitsTwoWithOneLineBeforeAnyWindow) {
   const std::vector<Case> cases = {
       {{"--scene", wall, "--script", (dir / "bad.txt").string()}, (dir / "bad.txt").string() + ":3: mode:"},
       {{"--scene", wall, "--script", (dir / "set.txt").string()}, (dir / "set.txt").string() + ":2: --set kernel=4"},
-      {{"--scene", wall, "--script", (dir / "none.txt").string()}, "--script: cannot read"},
+      {{"--scene", wall, "--script", (dir / "none.txt").string()}, "none.txt: no such file"},
       {{"--scene", (dir / "missing.json").string()}, "missing.json"},
       {{"--scene", wall, "--technique", "nope"}, "nope"},
       {{"--scene", wall, "--set", "bias=nan"}, "--set bias=nan"},

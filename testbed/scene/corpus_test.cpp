@@ -17,7 +17,9 @@ namespace {
 // A closed tetrahedron (4 triangles), a flat square and a file that is no mesh.
 void writeMeshes(const test::TempDir& dir) {
   test::writeFile(dir / "meshes/tetra.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
-  test::writeFile(dir / "meshes/sub/sheet.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 0 1\n0 0 1\n3 0 1 2\n3 0 2 3\n");
+  // Flat, with enough triangles (a square fanned around its centre) that flatness is its fault.
+  test::writeFile(dir / "meshes/sub/sheet.off",
+                  "OFF\n5 4 0\n0 0 0\n1 0 0\n1 0 1\n0 0 1\n0.5 0 0.5\n3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n");
   test::writeFile(dir / "meshes/broken.obj", "this is not a mesh\n");
 }
 

@@ -54,7 +54,10 @@ json sceneWithView(json document, const fs::path& source, const fs::path& destin
 }
 
 void saveSceneWithView(const Scene& scene, const fs::path& destination) {
-  const json document = readJsonInput(scene.file);  // the scene's own file, read as strictly again
+  // The scene's own file, read as strictly again, then parsed keeping its keys' order.
+  const std::string text = readInputFile(scene.file, kMaxJsonInputBytes);
+  parseJsonInput(text, scene.file);
+  const json document = json::parse(text);
   const json written = sceneWithView(document, scene.file, destination, scene.camera, scene.light);
   fs::path folder = destination.parent_path();
   if (folder.empty()) folder = ".";
