@@ -164,7 +164,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
     std::sort(records.begin(), records.end(), [](const Record& a, const Record& b) { return *a.cell < *b.cell; });
 
     std::string commandLine = "testbed sweep --spec " + options->spec + " --shard " + shard.text();
-    for (const char* flag : {"--size", "--shadow-map", "--depth-format", "--repeat"})
+    for (const char* flag : {"--size", "--shadow-map", "--depth-format", "--repeat", "--path"})
       if (command->count(flag)) commandLine += std::string(" ") + flag + " " + command->get_option(flag)->as<std::string>();
     commandLine += " --backend " + options->common.backend + " --out " + options->common.out;
     const nlohmann::json manifest = {
