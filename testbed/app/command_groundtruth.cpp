@@ -52,15 +52,7 @@ CommandRunner addGroundTruthCommand(CLI::App& app) {
     if (!options->frames.empty()) {
       if (options->areaSamples > 0) throw InputError("--area-samples: not available with --frames");
       const SequenceJob job{parseFrameRange(options->frames, scene), false, {{runs[0].first, runs[0].second}}};
-      OutputFiles files(options->common.out);
-      for (const auto& name : sequenceOutputNames(job)) files.claim(name);
-      auto context = createContext(options->common.backend);
-      validateSettings(settings);
-      FrameRunner runner(scene, settings);
-      runSequence(job, scene, runner, context->description(), files);
-      files.commit();
-      std::cerr << "testbed: wrote " << exact.info->id << ".mp4, _frames.json, _sequence.json to "
-                << oneLine(options->common.out) << "\n";
+      runSequenceCommand(job, scene, settings, options->common.backend, options->common.out);
       return 0;
     }
     OutputFiles files(options->common.out);  // checked before any rendering

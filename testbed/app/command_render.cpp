@@ -38,15 +38,7 @@ CommandRunner addRenderCommand(CLI::App& app) {
     Scene scene = loadScene(options->scene);
     if (!options->frames.empty()) {
       const SequenceJob job{parseFrameRange(options->frames, scene), false, {{&technique, parameters}}};
-      OutputFiles files(options->common.out);
-      for (const auto& name : sequenceOutputNames(job)) files.claim(name);
-      auto context = createContext(options->common.backend);
-      validateSettings(settings);
-      FrameRunner runner(scene, settings);
-      runSequence(job, scene, runner, context->description(), files);
-      files.commit();
-      std::cerr << "testbed: wrote " << technique.info->id << ".mp4, _frames.json, _sequence.json to "
-                << oneLine(options->common.out) << "\n";
+      runSequenceCommand(job, scene, settings, options->common.backend, options->common.out);
       return 0;
     }
     // The folder and the names the run will write, before any rendering.

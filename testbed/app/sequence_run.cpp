@@ -1,9 +1,5 @@
 #include "testbed/app/sequence_run.h"
 
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -13,12 +9,13 @@
 #include <optional>
 #include <sstream>
 
+#include "testbed/app/python_script.h"
 #include "testbed/core/error.h"
 #include "testbed/core/messages.h"
+#include "testbed/gl/context.h"
 #include "testbed/io/video_writer.h"
 #include "testbed/metrics/metrics.h"
 
-extern char** environ;
 
 namespace testbed {
 namespace {
@@ -51,20 +48,9 @@ std::string readBytes(const fs::path& file) {
   return bytes.str();
 }
 
-// scripts/motion_plot.py SERIES OUTDIR with Debian's python3 (which has matplotlib).
+// scripts/motion_plot.py SERIES OUTDIR.
 void plotSeries(const fs::path& series, const fs::path& folder) {
-  const std::string script = std::string(TESTBED_SOURCE_DIR) + "/scripts/motion_plot.py";
-  const std::string interpreter = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-  const std::string input = series.string(), output = folder.string();
-  std::vector<char*> argv = {const_cast<char*>(interpreter.c_str()), const_cast<char*>(script.c_str()),
-                             const_cast<char*>(input.c_str()), const_cast<char*>(output.c_str()), nullptr};
-  pid_t pid = 0;
-  if (posix_spawnp(&pid, interpreter.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
-    throw std::runtime_error("cannot start " + interpreter + " for " + script);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw std::runtime_error(script + " failed on " + input + " (python3-matplotlib installed? --no-plot skips plots)");
+  runPythonScript("motion_plot.py", {series.string(), folder.string()}, series.string());
 }
 
 std::string duration(double seconds) {
@@ -160,6 +146,19 @@ std::vector<nlohmann::json> runSequence(const SequenceJob& job, Scene& scene, Fr
   }
   files.writeText("sequence.json", nlohmann::json(records).dump(2) + "\n");
   return records;
+}
+
+void runSequenceCommand(const SequenceJob& job, Scene& scene, const RenderSettings& settings,
+                        const std::string& backend, const std::string& out) {
+  OutputFiles files(out);
+  for (const auto& name : sequenceOutputNames(job)) files.claim(name);
+  auto context = createContext(backend);
+  validateSettings(settings);
+  FrameRunner runner(scene, settings);
+  runSequence(job, scene, runner, context->description(), files);
+  files.commit();
+  std::cerr << "testbed: wrote " << job.entries.front().technique->info->id << ".mp4, _frames.json, _sequence.json to "
+            << oneLine(out) << "\n";
 }
 
 }  // namespace testbed

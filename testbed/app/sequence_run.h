@@ -36,4 +36,9 @@ std::vector<std::string> sequenceOutputNames(const SequenceJob& job);
 std::vector<nlohmann::json> runSequence(const SequenceJob& job, Scene& scene, FrameRunner& runner,
                                         const std::string& backend, OutputFiles& files);
 
+// render --frames and groundtruth --frames: claims the job's names in `out`, makes the
+// `backend` context, runs the job and commits; one line on stderr names what it wrote.
+void runSequenceCommand(const SequenceJob& job, Scene& scene, const RenderSettings& settings,
+                        const std::string& backend, const std::string& out);
+
 }  // namespace testbed

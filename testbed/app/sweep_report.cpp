@@ -1,19 +1,15 @@
 #include "testbed/app/sweep_report.h"
 
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <fstream>
 #include <set>
 #include <sstream>
 
 #include "testbed/app/commands.h"
+#include "testbed/app/python_script.h"
 #include "testbed/core/error.h"
 #include "testbed/io/json_input.h"
 #include "testbed/sweep/sweep_figure.h"
 
-extern char** environ;
 
 namespace testbed {
 namespace {
@@ -30,11 +26,6 @@ std::string slug(const std::string& text) {
   }
   while (!out.empty() && out.back() == '-') out.pop_back();
   return out.substr(0, 48);
-}
-
-std::string python() {
-  if (const char* chosen = std::getenv("TESTBED_PYTHON")) return chosen;
-  return fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";  // Debian's, which has matplotlib
 }
 
 }  // namespace
@@ -162,22 +153,12 @@ void stageSweepReport(OutputFiles& files, const SweepSpec& spec, const SweepPlan
 }
 
 void plotSweepTables(const fs::path& dir, const std::string& name) {
-  const std::string script = std::string(TESTBED_SOURCE_DIR) + "/scripts/sweep_plot.py";
   for (const auto& entry : fs::directory_iterator(dir)) {
     const std::string file = entry.path().filename().string();
     if (entry.path().extension() != ".json" || file.rfind(name, 0) != 0 ||
         (file != name + ".json" && file.rfind(name + ".", 0) != 0))
       continue;
-    const std::string interpreter = python(), table = entry.path().string();
-    std::vector<char*> argv = {const_cast<char*>(interpreter.c_str()), const_cast<char*>(script.c_str()),
-                               const_cast<char*>(table.c_str()), nullptr};
-    pid_t pid = 0;
-    if (posix_spawnp(&pid, interpreter.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
-      throw std::runtime_error("cannot start " + interpreter + " for " + script);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-      throw std::runtime_error(script + " failed on " + table + " (python3-matplotlib installed? --no-plot skips plots)");
+    runPythonScript("sweep_plot.py", {entry.path().string()}, entry.path().string());
   }
 }
 
