@@ -1,6 +1,6 @@
 // `testbed compare`: every chosen technique and the ground truth on one scene → per
 // technique T.{png,exr,json} with its error block, metrics.json (all records), report.md,
-// grid.png and speed_vs_error.svg.
+// grid.png, speed_vs_error.svg and index.html (report_html.h).
 #include <iostream>
 #include <sstream>
 
@@ -14,6 +14,7 @@
 #include "testbed/harness/metric_table.h"
 #include "testbed/metrics/metrics.h"
 #include "testbed/report/comparison.h"
+#include "testbed/report/report_html.h"
 #include "testbed/report/sequence_report.h"
 
 namespace testbed {
@@ -133,7 +134,7 @@ CommandRunner addCompareCommand(CLI::App& app) {
     for (const auto* t : techniques) ids.push_back(t->info->id);
     for (const auto& id : ids)
       for (const char* extension : {".png", ".exr", ".json"}) files.claim(id + extension);
-    for (const char* name : {"metrics.json", "report.md", "grid.png", "speed_vs_error.svg"}) files.claim(name);
+    for (const char* name : {"metrics.json", "report.md", "grid.png", "speed_vs_error.svg", "index.html"}) files.claim(name);
     auto context = createContext(options->common.backend);
     validateSettings(settings);
     const std::string backend = context->description();
@@ -192,8 +193,9 @@ CommandRunner addCompareCommand(CLI::App& app) {
     files.writeText("report.md", reportMarkdown(comparison));
     files.writeImage("grid.png", comparisonGrid(comparison));
     files.writeText("speed_vs_error.svg", speedVsErrorSvg(comparison));
+    files.writeText("index.html", compareHtml(comparison));
     files.commit();
-    std::cerr << "testbed: wrote report.md, grid.png, speed_vs_error.svg, metrics.json to "
+    std::cerr << "testbed: wrote index.html, report.md, grid.png, speed_vs_error.svg, metrics.json to "
               << oneLine(options->common.out) << "\n";
     return 0;
   }};

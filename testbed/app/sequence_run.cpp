@@ -15,6 +15,7 @@
 #include "testbed/gl/context.h"
 #include "testbed/io/video_writer.h"
 #include "testbed/metrics/metrics.h"
+#include "testbed/report/report_html.h"
 
 
 namespace testbed {
@@ -74,7 +75,7 @@ struct RunTrack {
 
 std::vector<std::string> sequenceOutputNames(const SequenceJob& job) {
   std::vector<std::string> names = {"sequence.json"};
-  if (job.compare) names.push_back("report.md");
+  if (job.compare) names.insert(names.end(), {"report.md", "index.html"});
   for (const auto& e : job.entries) {
     const std::string& id = e.technique->info->id;
     for (const char* suffix : {"_frames.json", "_sequence.json", ".mp4"}) names.push_back(id + suffix);
@@ -145,6 +146,7 @@ std::vector<nlohmann::json> runSequence(const SequenceJob& job, Scene& scene, Fr
     }
   }
   files.writeText("sequence.json", nlohmann::json(records).dump(2) + "\n");
+  if (job.compare) files.writeText("index.html", sequenceHtml(scene.name, records, job.plots));
   return records;
 }
 

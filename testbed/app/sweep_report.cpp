@@ -8,6 +8,7 @@
 #include "testbed/app/python_script.h"
 #include "testbed/core/error.h"
 #include "testbed/io/json_input.h"
+#include "testbed/report/report_html.h"
 #include "testbed/sweep/sweep_figure.h"
 
 
@@ -119,6 +120,7 @@ void stageSweepReport(OutputFiles& files, const SweepSpec& spec, const SweepPlan
   std::map<std::string, std::map<std::size_t, Record>> byBackend;
   for (const auto& record : records) byBackend[record.backend][record.cell.value()] = record;
   if (byBackend.empty()) byBackend[""];  // an empty table still shows the paper's figures
+  std::vector<std::pair<std::string, nlohmann::json>> pageTables;  // index.html's tables
   for (const auto& [backend, cells] : byBackend) {
     const std::string name = byBackend.size() == 1 ? spec.name : spec.name + "." + slug(backend);
     SweepHeader withBackend = header;
@@ -126,7 +128,8 @@ void stageSweepReport(OutputFiles& files, const SweepSpec& spec, const SweepPlan
       if (key == "backend") value = backend;
     const SweepTable table = buildSweepTable(spec, plan, cells);
     files.writeText(name + ".md", sweepTableMarkdown(table, withBackend));
-    files.writeText(name + ".json", sweepTableJson(table, withBackend).dump(2) + "\n");
+    pageTables.emplace_back(name, sweepTableJson(table, withBackend));
+    files.writeText(name + ".json", pageTables.back().second.dump(2) + "\n");
   }
   // One close-up figure per frame set-up of the figure column (a scene, in the papers).
   std::map<std::size_t, std::vector<std::size_t>> byTruth;
@@ -150,6 +153,7 @@ void stageSweepReport(OutputFiles& files, const SweepSpec& spec, const SweepPlan
     while (!names.insert(name).second) name.append("-").append(std::to_string(truth));
     files.writeImage(name + ".png", figure.image);
   }
+  files.writeText("index.html", sweepHtml(spec.name, pageTables, plan.entries, records, {names.begin(), names.end()}));
 }
 
 void plotSweepTables(const fs::path& dir, const std::string& name) {

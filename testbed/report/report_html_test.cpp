@@ -1,0 +1,57 @@
+#include "testbed/report/report_html.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace testbed {
+namespace {
+
+ImageF lit(int width, int height) {
+  return ImageF{width, height, 1, std::vector<float>(std::size_t(width) * height, 1.0f)};
+}
+
+void shadow(ImageF& image, int x0, int y0, int side) {
+  for (int y = y0; y < y0 + side; ++y)
+    for (int x = x0; x < x0 + side; ++x) image.pixels[std::size_t(y) * image.width + x] = 0.0f;
+}
+
+// Two techniques, each wrong in its own 4x4 block, and one block both get wrong: the windows
+// are chosen on the sum, so the shared block (2 x 16 misses) comes first, then a's (16), b's (9).
+TEST(ReportHtml, SharedWindowsRankBlocksByMismatchesSummedOverTechniques) {
+  const ImageF truth = lit(64, 32);
+  ImageF a = lit(64, 32), b = lit(64, 32);
+  shadow(a, 40, 20, 4);
+  shadow(b, 40, 20, 4);
+  shadow(a, 4, 4, 4);
+  shadow(b, 20, 8, 3);
+  const auto windows = sharedWorstWindows({&a, &b}, truth, 4, 5);
+  ASSERT_EQ(windows.size(), 3u);  // no fourth window holds a mismatch
+  EXPECT_EQ(windows[0].x, 40);
+  EXPECT_EQ(windows[0].y, 20);
+  EXPECT_EQ(windows[1].x, 4);  // 16 misses before b's 9
+  EXPECT_EQ(windows[1].y, 4);
+  EXPECT_EQ(windows[2].size, 4);
+  EXPECT_LE(std::abs(windows[2].x - 20), 1);  // b's 3x3 block inside the 4x4 window
+  EXPECT_LE(std::abs(windows[2].y - 8), 1);
+}
+
+TEST(ReportHtml, BackgroundAndAgreementGiveNoWindow) {
+  ImageF truth = lit(16, 16), same = lit(16, 16);
+  truth.pixels[0] = NAN;
+  same.pixels[0] = 0.0f;  // wrong only where the ground truth has no receiver
+  EXPECT_TRUE(sharedWorstWindows({&same}, truth, 4, 3).empty());
+}
+
+// The page's data sits in a <script>: a "</script>" in any text must not end it early.
+TEST(ReportHtml, DocumentKeepsScriptTextInsideItsElement) {
+  const std::string page = htmlDocument("a </script> title", {"note </script><b>"},
+                                        nlohmann::json::array({htmlLinks("links", {{"</script>", "x.html"}})}));
+  const std::string data = page.substr(page.find("id=\"page-data\">"));
+  EXPECT_EQ(data.substr(0, data.find("</script>")).find("</"), std::string::npos);
+  EXPECT_NE(page.find("<title>a &lt;/script&gt; title</title>"), std::string::npos);
+  EXPECT_EQ(page.find("http"), std::string::npos);  // nothing fetched from a network
+}
+
+}  // namespace
+}  // namespace testbed
