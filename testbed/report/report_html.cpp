@@ -339,7 +339,8 @@ std::string sweepHtml(const std::string& name, const std::vector<std::pair<std::
                                       " beside the paper's; each entry links to its cell's record. " + stem + ".md holds the same table."},
                                  columns, rows));
     sections.push_back(htmlFigure("Plot: " + stem, stem + ".svg", stem + ".png"));
-    for (const auto& [key, value] : table.value("header", nlohmann::json::object()).items())
+    const nlohmann::json header = table.value("header", nlohmann::json::object());
+    for (const auto& [key, value] : header.items())
       if (value.is_string()) notes.push_back(key + ": " + value.get<std::string>());
   }
   for (const std::string& stem : closeUps) sections.push_back(htmlFigure("Close-ups: " + stem, stem + ".png", stem + ".png"));
