@@ -1,6 +1,7 @@
 #include "testbed/sweep/sweep_records.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <set>
 
@@ -17,6 +18,13 @@ using nlohmann::json;
 
 // A sweep's sweep.json is a few hundred bytes.
 constexpr std::uint64_t kMaxManifestBytes = 1ull << 20;
+
+// A cell's "WxH", valid since the spec was read.
+std::pair<int, int> pixelsOf(const SweepCell& cell) {
+  int w = 0, h = 0;
+  std::sscanf(cell.size.c_str(), "%dx%d", &w, &h);
+  return {w, h};
+}
 
 std::string cellFile(std::size_t cell, const char* extension) {
   return "cell-" + std::to_string(cell) + "." + extension;
@@ -46,11 +54,11 @@ std::string problemOf(const Record& record, std::size_t cell, const SweepPlan& p
 }
 
 std::optional<CellImages> imagesOf(const fs::path& exr, const fs::path& png, const SweepCell& cell) {
-  const glm::ivec2 size = parseSize(cell.size);
+  const auto [w, h] = pixelsOf(cell);
   std::error_code error;
   if (!fs::is_regular_file(exr, error) || !fs::is_regular_file(png, error)) return std::nullopt;
   try {
-    return CellImages{readImage(exr, {size.x, size.y, 1}), readImage(png, {size.x, size.y, 3})};
+    return CellImages{readImage(exr, {w, h, 1}), readImage(png, {w, h, 3})};
   } catch (const std::exception&) {
     return std::nullopt;
   }
@@ -62,13 +70,13 @@ void matchRecord(const Record& record, const SweepCell& cell, const std::string&
   const RegisteredTechnique& technique =
       cell.technique == kGroundTruthId ? shadowVolumeGroundTruth() : findTechnique(cell.technique);
   const json params = resolveParameters(cell.technique, technique.info->parameters, cell.params).toJson();
-  const glm::ivec2 size = parseSize(cell.size);
+  const auto [w, h] = pixelsOf(cell);
   auto differs = [&](const char* field, const std::string& got, const std::string& expected) {
     throw InputError(where + "." + field + ": " + got + ", but cell " + std::to_string(record.cell.value_or(0)) + " is " +
                      expected + " (a record edited or from another spec)");
   };
   if (record.technique != cell.technique) differs("technique", record.technique, cell.technique);
-  if (record.width != size.x || record.height != size.y)
+  if (record.width != w || record.height != h)
     differs("width", std::to_string(record.width) + "x" + std::to_string(record.height), cell.size);
   if (record.shadowMap != cell.shadowMap)
     differs("shadow_map", std::to_string(record.shadowMap), std::to_string(cell.shadowMap));

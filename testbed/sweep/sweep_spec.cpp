@@ -5,6 +5,7 @@
 #include <glob.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <set>
 
@@ -252,8 +253,7 @@ const Metric* measureOf(const json& value, const SpecReader& r) {
 // "axes": the columns as the product scene × size × shadow_map × depth_format × subdivide
 // (every scene of "scenes", in order; the other axes where given), each column labelled
 // by its values.
-std::vector<SweepColumn> axisColumns(const json& axes, const SpecReader& r, const SweepSpec& spec,
-                                     const std::vector<std::string>& sceneOrder) {
+std::vector<SweepColumn> axisColumns(const json& axes, const SpecReader& r, const std::vector<std::string>& sceneOrder) {
   r.keys(axes, "axes", {"size", "shadow_map", "depth_format", "subdivide", "comment"});
   std::vector<SweepColumn> columns;
   for (const auto& id : sceneOrder) {
@@ -390,7 +390,7 @@ SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneF
   }
   if (document.contains("measure")) spec.measure = measureOf(document["measure"], r);
 
-  if (document.contains("axes")) spec.columns = axisColumns(document["axes"], r, spec, sceneOrder);
+  if (document.contains("axes")) spec.columns = axisColumns(document["axes"], r, sceneOrder);
   const json& columns = document.contains("columns") ? document["columns"] : json::array({nullptr});
   if (!columns.is_array() || columns.empty()) r.fail("columns", "expected a non-empty array");
   if (columns.size() > kMaxSweepColumns)
