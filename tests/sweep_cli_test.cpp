@@ -190,6 +190,31 @@ TEST(CliSweep, StudyOverACorpusFolderRendersEachGroundTruthOnce) {
   EXPECT_EQ(md.find("paper"), std::string::npos) << md;
 }
 
+// A light below the receiver leaves the frame entirely unlit: a warning line, and every
+// record of the frame flagged (excluded from statistics) with its denominators.
+TEST(CliSweep, AGroundTruthThatCannotRankTechniquesIsFlagged) {
+  TempDir tmp("sweep-flag");
+  json scene = json::parse(readFile(fs::path(TESTBED_SOURCE_DIR) / "scenes" / "wall.json"));
+  scene["light"]["eye"] = {0, -60, -60};
+  fs::create_directories(tmp / "scenes");
+  writeFile(tmp / "scenes" / "under.json", scene.dump());
+  json spec = studySpec(tmp / "scenes");
+  spec["axes"]["shadow_map"] = {32};
+  spec["techniques"] = {"sm"};
+  writeFile(tmp / "study.json", spec.dump());
+  const RunResult run = runTestbed({"sweep", "--spec", (tmp / "study.json").string(), "--no-plot", "--out", (tmp / "out").string()});
+  ASSERT_EQ(run.exitCode, 0) << run.describe();
+  EXPECT_NE(run.err.find("sweep: warning: under at 160x90: the ground truth is entirely unlit from the camera"),
+            std::string::npos) << run.err;
+  const json records = json::parse(readFile(tmp / "out" / "records.json"));
+  ASSERT_EQ(records.size(), 2u);
+  for (const auto& r : records) {
+    EXPECT_EQ(r["error"]["flag"], "entirely unlit from the camera") << r.dump();
+    EXPECT_EQ(r["error"]["pixels"]["gt_lit"], 0);
+    EXPECT_EQ(r["error"]["pixels"]["far_shadow"], r["error"]["pixels"]["receivers"]);
+  }
+}
+
 // Bad studies: one line naming the field, exit 2, nothing written.
 TEST(CliSweep, BadStudiesNameTheFieldAndWriteNothing) {
   TempDir tmp("sweep-bad-study");

@@ -196,8 +196,8 @@ CommandRunner addSweepCommand(CLI::App& app) {
           std::cerr << ": " << briefSummary(truthRecord, nullptr, ", ") << "\n";
           if (const auto flag = groundTruthFlag(*truthRecord.error))
             std::cerr << "sweep: warning: " << first.scene << " at " << first.size << ": the ground truth is " << *flag
-                      << "; every technique scores 0 error there, so its records carry error.flag and statistics leave "
-                         "them out\n";
+                      << ": it has no shadow edge to rank techniques by, so its records carry error.flag and statistics "
+                         "leave them out\n";
           checkSweepPasses(spec, plan, truthCell, truthRecord);
           if (own) save(truthCell, truth, truthRecord);
           truthVisibility = truth.visibility;
