@@ -198,6 +198,10 @@ std::map<std::size_t, ResumedCell> loadFinishedCells(const fs::path& out, const 
       if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
       cell = std::stoul(digits);
       const std::string where = entry.path().string();
+      if (!fs::is_regular_file(entry.symlink_status(error))) {  // a link is not followed out of the folder
+        log << "sweep: " << where << ": not a regular file (a link or a folder); running the cell again\n";
+        continue;
+      }
       try {
         const json value = readJsonInput(entry.path());
         if (!value.is_object() || value.value("spec_fingerprint", "") != identity.specFingerprint ||
