@@ -181,8 +181,7 @@ TEST_F(HostileMerge, WhatIsMergedIsVerifiedAndNothingIsWritten) {
   editedSpec["rows"][0]["paper"][0] = 99.0;
   json otherTechnique = records, otherParams = records;
   otherTechnique[0]["technique"] = otherTechnique[0]["technique"] == "sm" ? "pcf" : "sm";
-  for (auto& r : otherParams)
-    if (r["technique"] == "pcf") r["params"]["kernel"] = 5;
+  otherParams[0]["params"]["kernel"] = 5;  // a parameter its cell does not have
   json badOverrides = manifest;
   badOverrides["overrides"] = {{"shadow_map", "big"}};
   std::string huge = records.dump();

@@ -161,6 +161,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
       if (step > 1) std::cerr << ", ETA " << minutesSeconds(elapsed / double(step - 1) * double(steps - step + 1));
       std::cerr << std::flush;
     };
+    try {
     for (const auto& truthKey : truthKeys) {
       const std::vector<std::string>& group = framesOf[truthKey];
       const std::size_t truthCell = plan.cells[owned[group.front()].front()].truthCell;
@@ -183,7 +184,11 @@ CommandRunner addSweepCommand(CLI::App& app) {
               files.writeImage(figureFileName(cell, "png"), images->shaded);
             }
           }
-          saveFinishedCell(out, identity, record, images ? &*images : nullptr);
+          try {  // kept for a re-run; a cell that cannot be kept only costs resuming it
+            saveFinishedCell(out, identity, record, images ? &*images : nullptr);
+          } catch (const std::exception& error) {
+            std::cerr << "sweep: cell " << cell << " not kept for resuming: " << error.what() << "\n";
+          }
           records.push_back(std::move(record));
           if (images) figureImages.emplace(cell, std::move(*images));
         };
@@ -213,6 +218,12 @@ CommandRunner addSweepCommand(CLI::App& app) {
           save(i, run, record);
         }
       }
+    }
+    } catch (const InputError&) {
+      // A mistake in the spec found mid-run (a misnamed pass): the fixed spec is another
+      // spec, so nothing here could be resumed; nothing is left behind.
+      removeFinishedCells(out);
+      throw;
     }
     std::sort(records.begin(), records.end(), [](const Record& a, const Record& b) { return *a.cell < *b.cell; });
     // Figure images of resumed cells, for the shard's merge.

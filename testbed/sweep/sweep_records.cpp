@@ -223,7 +223,9 @@ void removeFinishedCells(const fs::path& out) {
   if (!fs::is_directory(fs::symlink_status(dir, error))) return;
   for (const auto& entry : fs::directory_iterator(dir, error)) {
     const std::string name = entry.path().filename().string();
-    if (name.rfind("cell-", 0) == 0 || name.rfind(".partial-cell-", 0) == 0) fs::remove(entry.path(), error);
+    const auto type = entry.symlink_status(error).type();
+    const bool ours = type == fs::file_type::regular || type == fs::file_type::symlink;  // never a folder under the name
+    if (ours && (name.rfind("cell-", 0) == 0 || name.rfind(".partial-cell-", 0) == 0)) fs::remove(entry.path(), error);
   }
   fs::remove(dir, error);  // only when empty
 }

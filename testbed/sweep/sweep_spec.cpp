@@ -178,12 +178,14 @@ std::vector<fs::path> folderScenes(const fs::path& folder) {
   return files;
 }
 
+// The files a glob matches, a corpus's manifest.json left out as in a folder.
 std::vector<fs::path> globScenes(const std::string& pattern) {
   glob_t found{};
   std::vector<fs::path> files;
   if (glob(pattern.c_str(), 0, nullptr, &found) == 0)  // sorted by glob
     for (std::size_t i = 0; i < found.gl_pathc; ++i)
-      if (fs::is_regular_file(found.gl_pathv[i])) files.push_back(found.gl_pathv[i]);
+      if (fs::is_regular_file(found.gl_pathv[i]) && fs::path(found.gl_pathv[i]).filename() != "manifest.json")
+        files.push_back(found.gl_pathv[i]);
   globfree(&found);
   return files;
 }
