@@ -88,7 +88,11 @@ def load_records(paths):
 
 
 def label_of(record, several_sizes):
-    return record["technique"] + (f" @{record.get('shadow_map')}" if several_sizes else "")
+    """The technique's id; a sweep record's row label instead (it names the parameters a
+    row varies: "pcf kernel=5"), with the map size where the records hold several."""
+    row = record.get("row")
+    name = row if isinstance(row, str) and row else record["technique"]
+    return name + (f" @{record.get('shadow_map')}" if several_sizes else "")
 
 
 def organise(records):

@@ -59,6 +59,8 @@ def main(path):
             ("paper", "paper", unit)]
     if table["has_ratios"]:
         keys += [("ours_ratio", "ours, cost × SM", "× SM"), ("paper_ratio", "paper, cost × SM", "× SM")]
+    # A panel with no figure at all (the paper's, in a study of one's own) is left out.
+    keys = [k for k in keys if k[0] == "ours" or any(v is not None for row in table["rows"] for v in row[k[0]])]
     rows = (len(keys) + 1) // 2
     legend_rows = (len(table["rows"]) + 3) // 4
     legend_height = 0.25 * legend_rows + 0.3  # inches below the panels
@@ -70,7 +72,7 @@ def main(path):
     handles = [matplotlib.lines.Line2D([], [], color=color(i), marker=shapes[i]) for i in range(len(table["rows"]))]
     labels = [name(row) for row in table["rows"]]
     figure.legend(handles, labels, loc="lower center", ncol=4, fontsize=8)
-    figure.suptitle((table["title"] or table["name"]) + "\n" + table["citation"], fontsize=10)
+    figure.suptitle((table["title"] or table["name"]) + "\n" + (table["citation"] or "a study of one's own"), fontsize=10)
     figure.tight_layout(rect=(0, legend_height / height, 1, 1 - 0.8 / height))
     stem = os.path.splitext(path)[0]
     for extension in ("png", "svg"):

@@ -89,6 +89,18 @@ class Script(unittest.TestCase):
                 self.assertGreater(os.path.getsize(os.path.join(out, f"{name}.png")), 1000)
             self.assertFalse(os.path.exists(os.path.join(out, "soft_rmse.png")))  # no values: no plot
 
+    def test_sweep_rows_label_varied_parameters(self):
+        # A sweep's records name their row: two pcf kernels stay apart, not "the first kept".
+        records = []
+        for i in range(4):
+            records.append(dict(record("sm", f"s{i}", 2.0 + i), row="sm"))
+            for kernel, scale in ((3, 0.5), (5, 0.25)):
+                records.append(dict(record("pcf", f"s{i}", scale * (2.0 + i)), row=f"pcf kernel={kernel}"))
+        table, flagged, notes = corpus_stats.organise(records)
+        self.assertEqual(sorted(table), ["pcf kernel=3", "pcf kernel=5", "sm"])
+        self.assertEqual(notes, [])
+        self.assertEqual(flagged, {})
+
     def test_bad_input_exits_2_with_one_line(self):
         with tempfile.TemporaryDirectory() as tmp:
             run = subprocess.run([sys.executable, SCRIPT, os.path.join(tmp, "missing"), "--out", tmp],

@@ -145,14 +145,43 @@ class HostileMerge : public ::testing::Test {
 
 TempDir* HostileMerge::tmp_ = nullptr;
 
+// What an interrupted run left in --out/.testbed-resume is read like any file from
+// elsewhere: garbage, another cell's record, a folder or a link in a cell's name are
+// named on a line each and their cells run again; the run ends with every record.
+TEST(HostileSweep, ResumeFilesAreVerifiedNotTrusted) {
+  TempDir tmp("hostile-resume");
+  const std::string spec = tinySpecFile().string();
+  ASSERT_EQ(runTestbed({"sweep", "--spec", spec, "--no-plot", "--out", (tmp / "whole").string()}).exitCode, 0);
+  const json manifest = json::parse(readFile(tmp / "whole" / "sweep.json"));
+  const json records = json::parse(readFile(tmp / "whole" / "records.json"));
+  const fs::path resume = tmp / "out" / ".testbed-resume";
+  fs::create_directories(resume / "cell-3.json");  // a folder
+  writeFile(resume / "cell-0.json", "not json {");
+  writeFile(resume / "cell-1.json", std::string(70000, '[') + std::string(70000, ']'));
+  const json entry = {{"spec_fingerprint", manifest["spec_fingerprint"]}, {"build", manifest["build"]}, {"record", records[4]}};
+  writeFile(resume / "cell-2.json", entry.dump());  // cell 4's record under cell 2's name
+  fs::create_symlink(tmp / "whole" / "records.json", resume / "cell-4.json");
+  json otherBuild = entry;
+  otherBuild["build"] = "0000000000000000";
+  writeFile(resume / "cell-99.json", otherBuild.dump());
+  const RunResult run = runTestbed({"sweep", "--spec", spec, "--no-plot", "--out", (tmp / "out").string()});
+  ASSERT_EQ(run.exitCode, 0) << run.describe();
+  EXPECT_EQ(run.err.find("sweep: resuming"), std::string::npos) << run.err;  // nothing was kept
+  for (const char* expected : {"cell-0.json: line 1", "cell-1.json: JSON nested deeper than 64 levels",
+                               "cell-2.json: record: its cell is not 2", "cell-3.json: not a regular file",
+                               "cell-4.json: not a regular file", "cell-99.json: of another spec or build"})
+    EXPECT_NE(run.err.find(expected), std::string::npos) << expected << "\n" << run.err;
+  EXPECT_EQ(cellsOf(json::parse(readFile(tmp / "out" / "records.json"))), cellsOf(records));
+  EXPECT_TRUE(fs::is_directory(resume / "cell-3.json"));  // not ours to remove
+}
+
 TEST_F(HostileMerge, WhatIsMergedIsVerifiedAndNothingIsWritten) {
   json spec = shard2Json("spec.json"), records = shard2Json("records.json"), manifest = shard2Json("sweep.json");
   json editedSpec = spec;
   editedSpec["rows"][0]["paper"][0] = 99.0;
   json otherTechnique = records, otherParams = records;
   otherTechnique[0]["technique"] = otherTechnique[0]["technique"] == "sm" ? "pcf" : "sm";
-  for (auto& r : otherParams)
-    if (r["technique"] == "pcf") r["params"]["kernel"] = 5;
+  otherParams[0]["params"]["kernel"] = 5;  // a parameter its cell does not have
   json badOverrides = manifest;
   badOverrides["overrides"] = {{"shadow_map", "big"}};
   std::string huge = records.dump();

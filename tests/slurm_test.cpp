@@ -1,10 +1,12 @@
 // The sweep's job array on a real (single-node, localhost) Slurm cluster: the test writes
 // the cluster's slurm.conf and munge key, starts munged, slurmctld and slurmd
-// (scripts/slurm/local_cluster.sh), submits a 2-shard sweep with its dependent merge
-// (scripts/slurm/submit.sh → sbatch --array=1-2), waits a bounded time, checks the merged
-// records hold the same cells as a local run, and stops the daemons whatever happened.
+// (scripts/slurm/local_cluster.sh), submits a 2-shard corpus study with its dependent
+// merge (scripts/slurm/submit.sh → sbatch --array=1-2), cancels one shard mid-run,
+// submits again, waits a bounded time, checks the merged records equal a local
+// uninterrupted run's, and stops the daemons whatever happened.
 #include <chrono>
 #include <cstdlib>
+#include <map>
 #include <sstream>
 #include <filesystem>
 #include <thread>
@@ -40,11 +42,57 @@ struct LocalCluster {
   ~LocalCluster() { runCommand({(kSlurmScripts / "local_cluster.sh").string(), "stop", dir.string()}, {.timeoutSeconds = 60}); }
 };
 
-TEST(Slurm, TwoShardJobArrayAndMergeHoldTheLocalRunsCells) {
-  const std::string missing = missingTool({"munged", "slurmctld", "slurmd", "sbatch", "squeue", "sinfo"});
+// Bounded wait until none of `jobs` is queued or running.
+bool waitForJobs(const std::string& jobs, const RunOptions& slurm, int seconds) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
+  while (std::chrono::steady_clock::now() < deadline) {
+    const RunResult queue = runCommand({"squeue", "-h", "-j", jobs}, {.env = slurm.env, .timeoutSeconds = 20});
+    if (queue.exitCode == 0 && queue.out.find_first_not_of(" \n") == std::string::npos) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  }
+  return false;
+}
+
+std::pair<std::string, std::string> submit(const fs::path& spec, const fs::path& out, const RunOptions& slurm) {
+  const RunResult run = runCommand({(kSlurmScripts / "submit.sh").string(), spec.string(), out.string(), "2", "--no-plot"}, slurm);
+  EXPECT_EQ(run.exitCode, 0) << run.describe();
+  std::istringstream ids(run.out);
+  std::string array, merge;
+  ids >> array >> merge;
+  return {array, merge};
+}
+
+std::size_t finishedCells(const fs::path& shard) {
+  std::size_t n = 0;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(shard / ".testbed-resume", error))
+    n += entry.path().extension() == ".json" && entry.path().filename().string().rfind("cell-", 0) == 0;
+  return n;
+}
+
+// The records' cells and error blocks (times differ run to run, errors do not).
+std::map<std::string, nlohmann::json> errorsOf(const nlohmann::json& records) {
+  std::map<std::string, nlohmann::json> out;
+  for (const auto& r : records) out[r["cell"].dump() + " " + r["technique"].get<std::string>()] = r["error"];
+  return out;
+}
+
+// A study over a generated corpus as a 2-task job array with its dependent merge; shard 1
+// is cancelled (scancel: SIGTERM) once it has finished a cell, which cancels the merge;
+// submitted again, both shards skip the cells they finished and the merge holds the
+// records of an uninterrupted local run.
+TEST(Slurm, CorpusSweepKilledShardResumesAndMergesAsAnUninterruptedRun) {
+  const std::string missing = missingTool({"munged", "slurmctld", "slurmd", "sbatch", "squeue", "sinfo", "scancel"});
   if (!missing.empty())
     GTEST_SKIP() << missing << " not installed: the Slurm test needs Debian's slurm-wlm and munge (scripts/setup.sh)";
   TempDir tmp("testbed-slurm");
+  const RunResult corpus = runTestbed({"corpus", "--seed", "2026", "--count", "2", "--out", (tmp / "corpus").string()});
+  ASSERT_EQ(corpus.exitCode, 0) << corpus.describe();
+  const nlohmann::json spec = {{"name", "corpus-study"}, {"scenes", (tmp / "corpus").string()},
+                               {"settings", {{"size", "160x90"}}}, {"measure", "mismatch_pct"},
+                               {"axes", {{"shadow_map", {16, 32, 64, 128, 256}}}}, {"techniques", {"sm", "pcf", "vsm"}}};
+  writeFile(tmp / "study.json", spec.dump());
+
   const LocalCluster cluster{tmp / "cluster"};
   const RunResult start = runCommand({(kSlurmScripts / "local_cluster.sh").string(), "start", cluster.dir.string()},
                                      {.timeoutSeconds = 60});
@@ -52,33 +100,39 @@ TEST(Slurm, TwoShardJobArrayAndMergeHoldTheLocalRunsCells) {
                                << readFile(cluster.dir / "slurmd.log");
   const RunOptions slurm = {.env = {{"SLURM_CONF", (cluster.dir / "slurm.conf").string()}, {"TESTBED_BINARY", TESTBED_BINARY}},
                             .timeoutSeconds = 60};
-  const fs::path out = tmp / "sweep";
-  const RunResult submit = runCommand({(kSlurmScripts / "submit.sh").string(), tinySpecFile().string(), out.string(), "2"}, slurm);
-  ASSERT_EQ(submit.exitCode, 0) << submit.describe();
-  std::istringstream ids(submit.out);
-  std::string array, merge;
-  ids >> array >> merge;
-  ASSERT_FALSE(array.empty() || merge.empty()) << submit.out;
+  const fs::path out = tmp / "sweep", shard1 = out / "shards" / "1-of-2";
+  const auto [array, merge] = submit(tmp / "study.json", out, slurm);
+  ASSERT_FALSE(array.empty() || merge.empty());
 
-  // Bounded wait until neither job is queued or running.
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(180);
-  bool done = false;
-  while (!done && std::chrono::steady_clock::now() < deadline) {
-    const RunResult queue = runCommand({"squeue", "-h", "-j", array + "," + merge}, {.env = slurm.env, .timeoutSeconds = 20});
-    done = queue.exitCode == 0 && queue.out.find_first_not_of(" \n") == std::string::npos;
-    if (!done) std::this_thread::sleep_for(std::chrono::milliseconds(500));
-  }
-  ASSERT_TRUE(done) << "the jobs did not finish within 180 s\n" << readFile(cluster.dir / "slurmctld.log");
+  // Shard 1 cancelled mid-run.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (finishedCells(shard1) < 1 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_GE(finishedCells(shard1), 1u) << readFile(out / "logs" / "shard-1.log");
+  ASSERT_EQ(runCommand({"scancel", array + "_1"}, {.env = slurm.env, .timeoutSeconds = 20}).exitCode, 0);
+  ASSERT_TRUE(waitForJobs(array + "," + merge, slurm, 180)) << readFile(cluster.dir / "slurmctld.log");
+  ASSERT_FALSE(fs::exists(shard1 / "records.json")) << "shard 1 finished before it was cancelled";
+  ASSERT_FALSE(fs::exists(out / "records.json")) << "the merge ran although shard 1 was cancelled";
+  const std::size_t left = finishedCells(shard1);
+
+  // Submitted again: both shards resume, the merge runs.
+  const auto [array2, merge2] = submit(tmp / "study.json", out, slurm);
+  ASSERT_TRUE(waitForJobs(array2 + "," + merge2, slurm, 180)) << readFile(cluster.dir / "slurmctld.log");
   ASSERT_TRUE(fs::exists(out / "records.json")) << readFile(out / "logs" / "shard-1.log") << readFile(out / "logs" / "shard-2.log")
                                                 << readFile(out / "logs" / "merge.log");
-  EXPECT_NE(readFile(out / "logs" / "shard-1.log").find("shard 1/2"), std::string::npos);
-  EXPECT_NE(readFile(out / "logs" / "shard-2.log").find("shard 2/2"), std::string::npos);
-  EXPECT_TRUE(fs::exists(out / "tiny.md"));
+  const std::string log1 = readFile(out / "logs" / "shard-1.log"), log2 = readFile(out / "logs" / "shard-2.log");
+  EXPECT_NE(log1.find("sweep: resuming: " + std::to_string(left) + " cells of shard 1/2"), std::string::npos) << log1;
+  EXPECT_NE(log2.find("sweep: resuming: 16 cells of shard 2/2"), std::string::npos) << log2;  // all of them
+  EXPECT_EQ(log2.find("] sm on"), std::string::npos) << log2;
+  EXPECT_TRUE(fs::exists(out / "corpus-study.md"));
 
-  const RunResult local = runTestbed({"sweep", "--spec", tinySpecFile().string(), "--no-plot", "--out", (tmp / "local").string()});
+  const RunResult local = runTestbed({"sweep", "--spec", (tmp / "study.json").string(), "--no-plot", "--out", (tmp / "local").string()});
   ASSERT_EQ(local.exitCode, 0) << local.describe();
-  EXPECT_EQ(cellsOf(nlohmann::json::parse(readFile(out / "records.json"))),
-            cellsOf(nlohmann::json::parse(readFile(tmp / "local" / "records.json"))));
+  const nlohmann::json merged = nlohmann::json::parse(readFile(out / "records.json"));
+  const nlohmann::json whole = nlohmann::json::parse(readFile(tmp / "local" / "records.json"));
+  EXPECT_EQ(merged.size(), 32u);  // 2 scenes × (ground truth + 5 map sizes × 3 techniques)
+  EXPECT_EQ(cellsOf(merged), cellsOf(whole));
+  EXPECT_EQ(errorsOf(merged), errorsOf(whole));
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 // records of different backends in tables of their own.
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -63,8 +64,8 @@ TEST(CliSweep, AMisnamedPassStopsAtTheFirstCellThatHasIt) {
   const RunResult run = runTestbed({"sweep", "--spec", (tmp / "bad-pass.json").string(), "--out", (tmp / "out").string()});
   EXPECT_EQ(run.exitCode, 2) << run.describe();
   EXPECT_NE(run.err.find("bad-pass.json: rows[1].passes: pcf has no pass 'penumbra'"), std::string::npos) << run.describe();
-  EXPECT_NE(run.err.find("[3/6] pcf"), std::string::npos) << run.describe();  // the first pcf cell
-  EXPECT_EQ(run.err.find("[4/6]"), std::string::npos) << run.describe();      // and nothing after it
+  EXPECT_NE(run.err.find("[3/5] pcf"), std::string::npos) << run.describe();  // the first pcf cell
+  EXPECT_EQ(run.err.find("[4/5]"), std::string::npos) << run.describe();      // and nothing after it
   EXPECT_FALSE(fs::exists(tmp / "out")) << run.describe();
 }
 
@@ -72,14 +73,18 @@ TEST(CliSweep, WholeRunWritesRecordsTableAndFigure) {
   TempDir tmp("sweep-whole");
   const RunResult run = runTestbed({"sweep", "--spec", tinySpecFile().string(), "--out", (tmp / "out").string()});
   ASSERT_EQ(run.exitCode, 0) << run.describe();
-  EXPECT_NE(run.err.find("[6/6] pcf on wall (160x90, map 128²"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("[5/5] pcf on wall (160x90, map 128²"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("ETA"), std::string::npos) << run.err;
   const json records = json::parse(readFile(tmp / "out" / "records.json"));
-  ASSERT_EQ(records.size(), 6u);  // per map size: groundtruth, sm, pcf
+  ASSERT_EQ(records.size(), 5u);  // one groundtruth (it uses no shadow map), per map size sm and pcf
   for (std::size_t i = 0; i < records.size(); ++i) {
     EXPECT_EQ(records[i]["cell"], i);
     EXPECT_TRUE(records[i]["error"].is_object()) << records[i].dump();
+    EXPECT_TRUE(records[i]["row"].is_string() && records[i]["column"].is_string()) << records[i].dump();
   }
+  EXPECT_EQ(records[4]["row"], "PCF 3 × 3");
+  EXPECT_EQ(records[4]["column"], "128²");
+  EXPECT_FALSE(fs::exists(tmp / "out" / ".testbed-resume"));  // removed once records.json holds the cells
   const std::string md = readFile(tmp / "out" / "tiny.md");
   EXPECT_NE(md.find("| PCF 3 × 3 |"), std::string::npos) << md;
   EXPECT_NE(md.find("- command: testbed sweep"), std::string::npos) << md;
@@ -147,6 +152,145 @@ TEST(CliMerge, ShardsJoinIntoTheWholeRunsCellsAndMismatchesAreRefused) {
   const std::string egl = readFile(tmp / "apart" / "tiny.egl-nvidia-h200.md");
   EXPECT_NE(egl.find("- backend: egl: NVIDIA H200"), std::string::npos) << egl;
   EXPECT_NE(egl.find("—"), std::string::npos) << egl;  // shard 1's cells are not in this table
+}
+
+// A folder of two scenes as `testbed corpus` writes them (manifest.json beside them).
+fs::path sceneFolder(const fs::path& dir) {
+  fs::create_directories(dir);
+  for (const char* name : {"wall.json", "bunny.json"}) fs::copy_file(fs::path(TESTBED_SOURCE_DIR) / "scenes" / name, dir / name);
+  writeFile(dir / "manifest.json", "{}");
+  return dir;
+}
+
+json studySpec(const fs::path& scenes) {
+  return {{"name", "study"}, {"scenes", scenes.string()}, {"settings", {{"size", "160x90"}}}, {"measure", "mismatch_pct"},
+          {"axes", {{"shadow_map", {32, 64, 128}}}}, {"techniques", {"sm", "pcf"}}};
+}
+
+// A study over a corpus folder: scenes × sizes × techniques expanded by the sweep, one
+// ground truth per scene, an error metric as the measure, no paper columns.
+TEST(CliSweep, StudyOverACorpusFolderRendersEachGroundTruthOnce) {
+  TempDir tmp("sweep-study");
+  writeFile(tmp / "study.json", studySpec(sceneFolder(tmp / "scenes")).dump());
+  const RunResult run = runTestbed({"sweep", "--spec", (tmp / "study.json").string(), "--no-plot", "--out", (tmp / "out").string()});
+  ASSERT_EQ(run.exitCode, 0) << run.describe();
+  std::size_t truths = 0;
+  for (std::size_t at = run.err.find("] groundtruth on"); at != std::string::npos; at = run.err.find("] groundtruth on", at + 1)) ++truths;
+  EXPECT_EQ(truths, 2u) << run.err;  // bunny and wall, each for all three map sizes
+  const json records = json::parse(readFile(tmp / "out" / "records.json"));
+  ASSERT_EQ(records.size(), 2u + 2u * 3u * 2u);
+  for (const auto& r : records) {
+    EXPECT_TRUE(r["error"]["pixels"]["receivers"].get<int>() > 0) << r.dump();
+    EXPECT_EQ(r["error"]["pixels"]["denominators"]["leak_pct"], "far_shadow");
+    EXPECT_TRUE(r.contains("row") && r.contains("column")) << r.dump();
+  }
+  const std::string md = readFile(tmp / "out" / "study.md");
+  EXPECT_NE(md.find("Measure: `mismatch_pct` (%)"), std::string::npos) << md;
+  EXPECT_NE(md.find("| technique | bunny · 32² |"), std::string::npos) << md;
+  EXPECT_EQ(md.find(" paper |"), std::string::npos) << md;  // no paper columns
+}
+
+// A light below the receiver leaves the frame entirely unlit: a warning line, and every
+// record of the frame flagged (excluded from statistics) with its denominators.
+TEST(CliSweep, AGroundTruthThatCannotRankTechniquesIsFlagged) {
+  TempDir tmp("sweep-flag");
+  json scene = json::parse(readFile(fs::path(TESTBED_SOURCE_DIR) / "scenes" / "wall.json"));
+  scene["light"]["eye"] = {0, -60, -60};
+  fs::create_directories(tmp / "scenes");
+  writeFile(tmp / "scenes" / "under.json", scene.dump());
+  json spec = studySpec(tmp / "scenes");
+  spec["axes"]["shadow_map"] = {32};
+  spec["techniques"] = {"sm"};
+  writeFile(tmp / "study.json", spec.dump());
+  const RunResult run = runTestbed({"sweep", "--spec", (tmp / "study.json").string(), "--no-plot", "--out", (tmp / "out").string()});
+  ASSERT_EQ(run.exitCode, 0) << run.describe();
+  EXPECT_NE(run.err.find("sweep: warning: under at 160x90: the ground truth is entirely unlit from the camera"),
+            std::string::npos) << run.err;
+  const json records = json::parse(readFile(tmp / "out" / "records.json"));
+  ASSERT_EQ(records.size(), 2u);
+  for (const auto& r : records) {
+    EXPECT_EQ(r["error"]["flag"], "entirely unlit from the camera") << r.dump();
+    EXPECT_EQ(r["error"]["pixels"]["gt_lit"], 0);
+    EXPECT_EQ(r["error"]["pixels"]["far_shadow"], r["error"]["pixels"]["receivers"]);
+  }
+}
+
+// Bad studies: one line naming the field, exit 2, nothing written.
+TEST(CliSweep, BadStudiesNameTheFieldAndWriteNothing) {
+  TempDir tmp("sweep-bad-study");
+  fs::create_directories(tmp / "empty");
+  const fs::path scenes = sceneFolder(tmp / "scenes");
+  struct Case {
+    json spec;
+    std::string expected;
+  };
+  json metric = studySpec(scenes);
+  metric["measure"] = "joules";
+  const std::vector<Case> cases = {
+      {studySpec(tmp / "missing"), "scenes: no such scene file or folder"},
+      {studySpec(tmp / "scenes" / "*.scene"), "matches no scene file"},
+      {studySpec(tmp / "empty"), "holds no scene file (an empty corpus?)"},
+      {metric, "measure: expected a metric of the metric table"},
+  };
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const fs::path spec = tmp / ("bad" + std::to_string(i) + ".json");
+    writeFile(spec, cases[i].spec.dump());
+    const RunResult run = runTestbed({"sweep", "--spec", spec.string(), "--out", (tmp / "out").string()});
+    EXPECT_EQ(run.exitCode, 2) << run.describe();
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.describe();
+    EXPECT_NE(run.err.find(spec.string() + ": "), std::string::npos) << run.describe();
+    EXPECT_NE(run.err.find(cases[i].expected), std::string::npos) << run.describe();
+    EXPECT_FALSE(fs::exists(tmp / "out")) << run.describe();
+  }
+}
+
+// The records' cells and error blocks: what a resumed and an uninterrupted run must agree on
+// (times differ run to run, errors do not).
+std::map<std::string, json> errorsOf(const json& records) {
+  std::map<std::string, json> out;
+  for (const auto& r : records) out[r["cell"].dump() + " " + r["technique"].get<std::string>()] = r["error"];
+  return out;
+}
+
+// A sweep killed mid-run and run again skips the cells it finished (verified, not trusted:
+// an edited one runs again) and ends with the records of an uninterrupted run.
+TEST(CliSweep, AKilledSweepResumesWhereItStopped) {
+  TempDir tmp("sweep-resume");
+  writeFile(tmp / "study.json", studySpec(sceneFolder(tmp / "scenes")).dump());
+  const std::string spec = (tmp / "study.json").string(), out = (tmp / "out").string();
+  // Killed (SIGTERM, as Slurm's scancel) once its third cell is on disk.
+  const std::string script = "\"$0\" sweep --spec \"$1\" --no-plot --out \"$2\" 2>\"$2.log\" & pid=$!; "
+                             "until [ \"$(ls \"$2/.testbed-resume\" 2>/dev/null | grep -c '^cell-.*json$')\" -ge 3 ]; do "
+                             "kill -0 $pid 2>/dev/null || exit 3; sleep 0.05; done; kill -TERM $pid; wait $pid; exit 0";
+  const RunResult killed = runCommand({"sh", "-c", script, TESTBED_BINARY, spec, out});
+  ASSERT_EQ(killed.exitCode, 0) << killed.describe() << readFile(out + ".log");
+  ASSERT_FALSE(fs::exists(tmp / "out" / "records.json")) << "the sweep finished before it was killed";
+  // One finished cell edited: it must run again, not be trusted.
+  std::vector<fs::path> cells;
+  for (const auto& entry : fs::directory_iterator(tmp / "out" / ".testbed-resume"))
+    if (entry.path().extension() == ".json" && entry.path().filename().string().rfind("cell-", 0) == 0) cells.push_back(entry.path());
+  ASSERT_GE(cells.size(), 3u);
+  std::sort(cells.begin(), cells.end());
+  json edited = json::parse(readFile(cells.back()));
+  edited["record"]["shadow_map"] = 4096;
+  writeFile(cells.back(), edited.dump());
+
+  const RunResult resumed = runTestbed({"sweep", "--spec", spec, "--no-plot", "--out", out});
+  ASSERT_EQ(resumed.exitCode, 0) << resumed.describe();
+  EXPECT_NE(resumed.err.find("sweep: resuming: " + std::to_string(cells.size() - 1) + " cells"), std::string::npos) << resumed.err;
+  EXPECT_NE(resumed.err.find(cells.back().filename().string() + ": record.shadow_map: 4096"), std::string::npos) << resumed.err;
+  const RunResult whole = runTestbed({"sweep", "--spec", spec, "--no-plot", "--out", (tmp / "whole").string()});
+  ASSERT_EQ(whole.exitCode, 0) << whole.describe();
+  const json a = json::parse(readFile(tmp / "out" / "records.json")), b = json::parse(readFile(tmp / "whole" / "records.json"));
+  EXPECT_EQ(cellsOf(a), cellsOf(b));
+  EXPECT_EQ(errorsOf(a), errorsOf(b));
+  EXPECT_FALSE(fs::exists(tmp / "out" / ".testbed-resume"));
+  // Run once more: every record is there and valid; only the close-up figure's cells (the
+  // first column, bunny at 32²), whose images a whole run does not keep, render again.
+  const RunResult again = runTestbed({"sweep", "--spec", spec, "--no-plot", "--out", out});
+  ASSERT_EQ(again.exitCode, 0) << again.describe();
+  EXPECT_NE(again.err.find("sweep: resuming: " + std::to_string(b.size() - 3) + " cells"), std::string::npos) << again.err;
+  EXPECT_EQ(again.err.find("on wall"), std::string::npos) << again.err;
 }
 
 }  // namespace

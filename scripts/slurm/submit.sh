@@ -3,6 +3,9 @@
 # (merge.sbatch) that starts once every shard has succeeded. Prints the two job ids.
 #   scripts/slurm/submit.sh SPEC OUT N [testbed sweep options...]
 # e.g. scripts/slurm/submit.sh paper/gi2016-table2.json results/paper/gi2016-table2 8 --backend egl
+# Submitting the same SPEC, OUT and N again (after a shard failed or was cancelled, which
+# cancels the merge) resumes each shard where it stopped: finished cells are kept
+# (docs/paper-runs.md "Resuming").
 # Logs: OUT/logs/shard-K.log and OUT/logs/merge.log. Extra sbatch options (partition,
 # account, GPUs) go in $SBATCH_OPTIONS, e.g. SBATCH_OPTIONS="--partition=gpu --gres=gpu:1".
 set -euo pipefail

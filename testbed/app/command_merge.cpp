@@ -15,6 +15,7 @@
 #include "testbed/app/sweep_report.h"
 #include "testbed/core/error.h"
 #include "testbed/io/json_input.h"
+#include "testbed/sweep/sweep_records.h"
 #include "testbed/technique/registry.h"
 
 namespace testbed {
@@ -56,26 +57,6 @@ std::string field(const ShardDir& s, const char* name) {
   if (!s.manifest.contains(name) || !s.manifest[name].is_string())
     throw InputError((s.dir / "sweep.json").string() + ": " + name + ": missing or not a string");
   return s.manifest[name].get<std::string>();
-}
-
-// What the record of `cell` must say about itself: the cell's technique, sizes, depth
-// format and its parameters resolved as the sweep resolved them.
-void matchRecord(const Record& record, const SweepCell& cell, const std::string& where) {
-  const RegisteredTechnique& technique =
-      cell.technique == kGroundTruthId ? shadowVolumeGroundTruth() : findTechnique(cell.technique);
-  const json params = resolveParameters(cell.technique, technique.info->parameters, cell.params).toJson();
-  const glm::ivec2 size = parseSize(cell.size);
-  auto differs = [&](const char* field, const std::string& got, const std::string& expected) {
-    throw InputError(where + "." + field + ": " + got + ", but cell " + std::to_string(*record.cell) + " is " + expected +
-                     " (a record edited or from another spec)");
-  };
-  if (record.technique != cell.technique) differs("technique", record.technique, cell.technique);
-  if (record.width != size.x || record.height != size.y)
-    differs("width", std::to_string(record.width) + "x" + std::to_string(record.height), cell.size);
-  if (record.shadowMap != cell.shadowMap)
-    differs("shadow_map", std::to_string(record.shadowMap), std::to_string(cell.shadowMap));
-  if (record.depthFormat != cell.depthFormat) differs("depth_format", record.depthFormat, cell.depthFormat);
-  if (record.params != params) differs("params", briefJson(record.params), briefJson(params));
 }
 
 }  // namespace
@@ -189,7 +170,7 @@ CommandRunner addMergeCommand(CLI::App& app) {
     for (const auto& s : shards) manifest["merged_from"].push_back({{"dir", s.dir.string()}, {"shard", s.shard.text()},
                                                                     {"command", field(s, "command")}, {"host", field(s, "host")}});
     OutputFiles files(options->out);
-    files.writeText("records.json", json(records).dump(2) + "\n");
+    files.writeText("records.json", sweepRecordsJson(records, spec, plan).dump(2) + "\n");
     files.writeText("sweep.json", manifest.dump(2) + "\n");
     files.writeText("spec.json", first.spec.dump(2) + "\n");
     stageSweepReport(files, spec, plan, records,

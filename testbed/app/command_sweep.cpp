@@ -20,12 +20,14 @@
 #include "testbed/harness/record.h"
 #include "testbed/metrics/metrics.h"
 #include "testbed/scene/primitives.h"
+#include "testbed/sweep/sweep_records.h"
 #include "testbed/sweep/sweep_scene.h"
 #include "testbed/sweep/sweep_table.h"
 
 namespace testbed {
 namespace {
 
+namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 std::string minutesSeconds(double seconds) {
@@ -111,11 +113,46 @@ CommandRunner addSweepCommand(CLI::App& app) {
     const std::set<std::size_t> figureSet(figure.begin(), figure.end());
 
     OutputFiles files(options->common.out);
+    const fs::path out = options->common.out;
+    const SweepIdentity identity{specFingerprint(spec.document, overridesJson(overrides)), buildFingerprint(), backend};
+    // A re-submitted sweep or shard: the cells it finished before, verified, are not run again.
+    std::map<std::size_t, ResumedCell> finished = loadFinishedCells(out, identity, plan, shard, figure, std::cerr);
     std::vector<Record> records;
     std::map<std::size_t, FigureImages> figureImages;
+    for (auto& [cell, resumed] : finished) {
+      records.push_back(resumed.record);
+      if (resumed.images) figureImages.emplace(cell, std::move(*resumed.images));
+    }
+    if (!finished.empty())
+      std::cerr << "sweep: resuming: " << finished.size() << " cells of shard " << shard.text() << " have valid records in "
+                << out.string() << "; running the rest\n";
+
+    // Frame set-ups grouped by their ground truth (scene, output size): it is rendered
+    // once per group, by the set-up of its own cell first, and reused for every map size.
+    std::vector<std::string> truthKeys;
+    std::map<std::string, std::vector<std::string>> framesOf;
+    for (const auto& key : frames) {
+      const SweepCell& c = plan.cells[owned[key].front()];
+      auto& group = framesOf[c.truthKey()];
+      if (group.empty()) truthKeys.push_back(c.truthKey());
+      if (c.frameKey() == plan.cells[c.truthCell].frameKey()) group.insert(group.begin(), key);
+      else group.push_back(key);
+    }
+    auto toRun = [&](std::size_t cell) { return shard.owns(cell) && !finished.count(cell); };
+    auto techniqueCells = [&](const std::string& key) {
+      std::vector<std::size_t> cells;
+      for (std::size_t i : owned[key])
+        if (i != plan.cells[i].truthCell && toRun(i)) cells.push_back(i);
+      return cells;
+    };
     std::size_t steps = 0, step = 0;
-    for (const auto& key : frames) steps += owned[key].size() + (shard.owns(plan.cells[owned[key].front()].truthCell) ? 0 : 1);
-    if (!frames.empty()) warmUpGBuffer({});
+    for (const auto& truthKey : truthKeys) {
+      std::size_t cells = 0;
+      for (const auto& key : framesOf[truthKey]) cells += techniqueCells(key).size();
+      const std::size_t truthCell = plan.cells[owned[framesOf[truthKey].front()].front()].truthCell;
+      if (cells > 0 || toRun(truthCell)) steps += cells + 1;
+    }
+    if (steps > 0) warmUpGBuffer({});
     const auto start = Clock::now();
     auto progress = [&](const SweepCell& cell, const std::string& what) {
       const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
@@ -124,44 +161,78 @@ CommandRunner addSweepCommand(CLI::App& app) {
       if (step > 1) std::cerr << ", ETA " << minutesSeconds(elapsed / double(step - 1) * double(steps - step + 1));
       std::cerr << std::flush;
     };
-    for (const auto& key : frames) {
-      const SweepCell& first = plan.cells[owned[key].front()];
-      const Scene& scene = scenes.at(first.scene + "|" + (first.subdivide ? std::to_string(*first.subdivide) : "-"));
-      FrameRunner runner(scene, {parseSize(first.size), first.shadowMap, parseDepthFormat(first.depthFormat), plan.repeat, path});
-      auto save = [&](std::size_t cell, const TechniqueRun& run, Record record) {
-        record.cell = cell;
-        if (shard.owns(cell)) records.push_back(record);
-        if (figureSet.count(cell) && shard.owns(cell)) {
-          FigureImages images{run.visibility, runner.shade(run.visibility)};
-          if (shard.count > 1) {  // merge composes the figure from the shards' images
-            files.writeImage(figureFileName(cell, "exr"), images.visibility);
-            files.writeImage(figureFileName(cell, "png"), images.shaded);
+    try {
+    for (const auto& truthKey : truthKeys) {
+      const std::vector<std::string>& group = framesOf[truthKey];
+      const std::size_t truthCell = plan.cells[owned[group.front()].front()].truthCell;
+      std::optional<ImageF> truthVisibility;  // the group's reference, kept only while the group runs
+      for (const auto& key : group) {
+        const std::vector<std::size_t> cells = techniqueCells(key);
+        const bool truthHere = !truthVisibility && (toRun(truthCell) || !cells.empty());
+        if (cells.empty() && !truthHere) continue;
+        const SweepCell& first = plan.cells[owned[key].front()];
+        const Scene& scene = scenes.at(first.scene + "|" + (first.subdivide ? std::to_string(*first.subdivide) : "-"));
+        FrameRunner runner(scene, {parseSize(first.size), first.shadowMap, parseDepthFormat(first.depthFormat), plan.repeat, path});
+        auto save = [&](std::size_t cell, const TechniqueRun& run, Record record) {
+          record.cell = cell;
+          if (!shard.owns(cell)) return;
+          std::optional<FigureImages> images;
+          if (figureSet.count(cell)) {
+            images = FigureImages{run.visibility, runner.shade(run.visibility)};
+            if (shard.count > 1) {  // merge composes the figure from the shards' images
+              files.writeImage(figureFileName(cell, "exr"), images->visibility);
+              files.writeImage(figureFileName(cell, "png"), images->shaded);
+            }
           }
-          figureImages.emplace(cell, std::move(images));
+          try {  // kept for a re-run; a cell that cannot be kept only costs resuming it
+            saveFinishedCell(out, identity, record, images ? &*images : nullptr);
+          } catch (const std::exception& error) {
+            std::cerr << "sweep: cell " << cell << " not kept for resuming: " << error.what() << "\n";
+          }
+          records.push_back(std::move(record));
+          if (images) figureImages.emplace(cell, std::move(*images));
+        };
+        if (truthHere) {  // every technique's errors are taken against it
+          const bool own = toRun(truthCell) && key == group.front() && first.frameKey() == plan.cells[truthCell].frameKey();
+          progress(first, own ? "groundtruth" : "groundtruth (reference for the errors)");
+          const TechniqueRun truth = runner.run(shadowVolumeGroundTruth(), resolveParameters(kGroundTruthId, {}, {}));
+          Record truthRecord = makeRecord(truth, runner, backend);
+          truthRecord.error = computeErrorMetrics(truth.visibility, truth.visibility);
+          std::cerr << ": " << briefSummary(truthRecord, nullptr, ", ") << "\n";
+          if (const auto flag = groundTruthFlag(*truthRecord.error))
+            std::cerr << "sweep: warning: " << first.scene << " at " << first.size << ": the ground truth is " << *flag
+                      << ": it has no shadow edge to rank techniques by, so its records carry error.flag and statistics "
+                         "leave them out\n";
+          checkSweepPasses(spec, plan, truthCell, truthRecord);
+          if (own) save(truthCell, truth, truthRecord);
+          truthVisibility = truth.visibility;
         }
-      };
-      // The ground truth first: every technique's errors are taken against it.
-      const std::size_t truthCell = first.truthCell;
-      progress(first, shard.owns(truthCell) ? "groundtruth" : "groundtruth (reference for the errors)");
-      const TechniqueRun truth = runner.run(shadowVolumeGroundTruth(), resolveParameters(kGroundTruthId, {}, {}));
-      Record truthRecord = makeRecord(truth, runner, backend);
-      truthRecord.error = computeErrorMetrics(truth.visibility, truth.visibility);
-      std::cerr << ": " << briefSummary(truthRecord, nullptr, ", ") << "\n";
-      checkSweepPasses(spec, plan, truthCell, truthRecord);
-      save(truthCell, truth, truthRecord);
-      for (std::size_t i : owned[key]) {
-        if (i == truthCell) continue;
-        const SweepCell& cell = plan.cells[i];
-        progress(cell, cell.technique);
-        const TechniqueRun run = runner.run(techniqueOf(cell), parameters.at(i));
-        Record record = makeRecord(run, runner, backend);
-        record.error = computeErrorMetrics(run.visibility, truth.visibility);
-        std::cerr << ": " << briefSummary(record, nullptr, ", ") << "\n";
-        checkSweepPasses(spec, plan, i, record);  // a misnamed pass stops here, not after every cell
-        save(i, run, record);
+        for (std::size_t i : cells) {
+          const SweepCell& cell = plan.cells[i];
+          progress(cell, cell.technique);
+          const TechniqueRun run = runner.run(techniqueOf(cell), parameters.at(i));
+          Record record = makeRecord(run, runner, backend);
+          record.error = computeErrorMetrics(run.visibility, *truthVisibility);
+          std::cerr << ": " << briefSummary(record, nullptr, ", ") << "\n";
+          checkSweepPasses(spec, plan, i, record);  // a misnamed pass stops here, not after every cell
+          save(i, run, record);
+        }
       }
     }
+    } catch (const InputError&) {
+      // A mistake in the spec found mid-run (a misnamed pass): the fixed spec is another
+      // spec, so nothing here could be resumed; nothing is left behind.
+      removeFinishedCells(out);
+      throw;
+    }
     std::sort(records.begin(), records.end(), [](const Record& a, const Record& b) { return *a.cell < *b.cell; });
+    // Figure images of resumed cells, for the shard's merge.
+    if (shard.count > 1)
+      for (const auto& [cell, resumed] : finished)
+        if (resumed.images) {
+          files.writeImage(figureFileName(cell, "exr"), figureImages.at(cell).visibility);
+          files.writeImage(figureFileName(cell, "png"), figureImages.at(cell).shaded);
+        }
 
     std::string commandLine = "testbed sweep --spec " + options->spec + " --shard " + shard.text();
     for (const char* flag : {"--size", "--shadow-map", "--depth-format", "--repeat", "--path"})
@@ -170,17 +241,18 @@ CommandRunner addSweepCommand(CLI::App& app) {
     const nlohmann::json manifest = {
         {"spec", spec.name},
         {"spec_file", spec.file.string()},
-        {"spec_fingerprint", specFingerprint(spec.document, overridesJson(overrides))},
+        {"spec_fingerprint", identity.specFingerprint},
         {"overrides", overridesJson(overrides)},
-        {"build", buildFingerprint()},
+        {"build", identity.build},
         {"shard", shard.text()},
         {"cells", plan.cells.size()},
+        {"resumed_cells", finished.size()},
         {"command", commandLine},
         {"host", hostDescription()},
         {"backend", backend},
         {"seconds", std::chrono::duration<double>(Clock::now() - start).count()},
     };
-    files.writeText("records.json", nlohmann::json(records).dump(2) + "\n");
+    files.writeText("records.json", sweepRecordsJson(records, spec, plan).dump(2) + "\n");
     files.writeText("sweep.json", manifest.dump(2) + "\n");
     files.writeText("spec.json", spec.document.dump(2) + "\n");
     const bool whole = shard.count == 1;
@@ -191,6 +263,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
                        figureImages);
     }
     files.commit();
+    removeFinishedCells(out);  // records.json holds them now
     if (whole && !options->noPlot) plotSweepTables(options->common.out, spec.name);
     std::cerr << "testbed: " << records.size() << " records of " << plan.cells.size() << " cells (shard " << shard.text()
               << ") in " << options->common.out << "\n";

@@ -12,6 +12,7 @@
 
 #include "testbed/io/image_io.h"
 #include "testbed/sweep/sweep_plan.h"
+#include "testbed/sweep/sweep_records.h"
 #include "testbed/sweep/sweep_table.h"
 
 namespace testbed {
@@ -28,10 +29,7 @@ nlohmann::json overridesJson(const SweepOverrides& overrides);
 // "<where>.<key>: <what>".
 SweepOverrides overridesFromJson(const nlohmann::json& overrides, const std::string& where);
 
-struct FigureImages {
-  ImageF visibility;  // one channel, NaN background
-  ImageF shaded;      // RGB, for people
-};
+using FigureImages = CellImages;  // a figure cell's visibility and shaded frame
 
 // Stages every backend's table (records of different backends never share a table) and
 // the close-up figure of the figure column's cells into `files`.

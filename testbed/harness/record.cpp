@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 
 #include "testbed/core/error.h"
 #include "testbed/harness/metric_table.h"
@@ -147,6 +148,43 @@ std::optional<PassWork> readWork(const Reader& record) {
   return out;
 }
 
+// The error block's pixel counts: each percentage's denominator and the ground truth's
+// make-up, so that "3.85 %" can be read as "10 of 260 pixels", and the flag of a ground
+// truth that cannot rank techniques (metrics.h groundTruthFlag). Written only where
+// counted; records made before have neither key.
+constexpr std::array<std::pair<const char*, int ErrorMetrics::*>, 7> kPixelCounts = {{
+    {"receivers", &ErrorMetrics::receivers},
+    {"gt_lit", &ErrorMetrics::gtLitReceivers},
+    {"gt_shadow", &ErrorMetrics::gtShadowReceivers},
+    {"gt_boundary", &ErrorMetrics::gtBoundaryPixels},
+    {"edge_band", &ErrorMetrics::edgeBandPixels},
+    {"far_shadow", &ErrorMetrics::farShadowReceivers},
+    {"far_lit", &ErrorMetrics::farLitReceivers},
+}};
+
+void writePixelCounts(json& error, const ErrorMetrics& m) {
+  if (m.receivers == 0) return;
+  json pixels = json::object();
+  for (const auto& [name, member] : kPixelCounts) pixels[name] = m.*member;
+  // Which count each percentage is taken over.
+  pixels["denominators"] = {{"mismatch_pct", "receivers"}, {"edge_mismatch_pct", "edge_band"},
+                            {"leak_pct", "far_shadow"}, {"overestimation_pct", "far_lit"}};
+  error["pixels"] = pixels;
+  const auto flag = groundTruthFlag(m);
+  error["flag"] = flag ? json(*flag) : json(nullptr);
+}
+
+void readPixelCounts(const Reader& error, ErrorMetrics& m) {
+  if (!error.has("pixels")) return;
+  const Reader pixels = error["pixels"];
+  for (const auto& [name, member] : kPixelCounts) {
+    const std::uint64_t count = pixels[name].count();
+    if (count > std::uint64_t(std::numeric_limits<int>::max())) pixels[name].fail("more pixels than an image holds");
+    m.*member = int(count);
+  }
+  if (m.receivers == 0) pixels["receivers"].fail("expected at least one receiver");
+}
+
 LightRecord readLight(const Reader& r) {
   LightRecord l;
   l.type = r["type"].text();
@@ -204,6 +242,7 @@ Record read(const Reader& r) {
     m.store(out, m.integer ? double(value.count()) : value.magnitude());
   }
   if (!error.value.is_null() && !out.error) out.error.emplace();  // an error block of no metric: impossible today
+  if (out.error) readPixelCounts(error, *out.error);
   std::uint64_t split = 0;
   for (const auto& m : out.memory.value_or(std::vector<GpuMemoryLedger::Resource>{})) split += m.bytes;
   if (out.memory && split != out.memoryBytes)
@@ -307,6 +346,7 @@ void to_json(json& out, const Record& r) {
     out[json::json_pointer(std::string(m.path))] =
         !v ? json(nullptr) : m.integer ? json(std::uint64_t(*v)) : json(*v);
   }
+  if (r.error) writePixelCounts(out["error"], *r.error);
 }
 
 }  // namespace testbed

@@ -97,7 +97,7 @@ ErrorMetrics computeErrorMetrics(const ImageF& visibility, const ImageF& groundT
   const double band2 = options.edgeBandPx * options.edgeBandPx;
   const double margin2 = options.marginPx * options.marginPx;
 
-  std::size_t mismatches = 0, bandPixels = 0, bandMismatches = 0;
+  std::size_t mismatches = 0, bandPixels = 0, bandMismatches = 0, gtLit = 0;
   std::size_t farShadow = 0, leaks = 0, farLit = 0, overestimates = 0;
   double sumSq = 0, softSumSq = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -105,6 +105,7 @@ ErrorMetrics computeErrorMetrics(const ImageF& visibility, const ImageF& groundT
     const float v = visibility.pixels[i], gt = groundTruth.pixels[i];
     const bool wrong = isLit(v) != isLit(gt);
     mismatches += wrong;
+    gtLit += isLit(gt);
     const double d = double(v) - double(gt);
     sumSq += d * d;
     if (areaReference) {
@@ -128,6 +129,11 @@ ErrorMetrics computeErrorMetrics(const ImageF& visibility, const ImageF& groundT
 
   ErrorMetrics m;
   m.receivers = int(receivers);
+  m.gtLitReceivers = int(gtLit);
+  m.gtShadowReceivers = int(receivers - gtLit);
+  m.edgeBandPixels = int(bandPixels);
+  m.farShadowReceivers = int(farShadow);
+  m.farLitReceivers = int(farLit);
   m.mismatchPct = percent(mismatches, receivers);
   m.edgeMismatchPct = percent(bandMismatches, bandPixels);
   m.rmse = std::sqrt(sumSq / double(receivers));
@@ -163,6 +169,14 @@ ErrorMetrics computeErrorMetrics(const ImageF& visibility, const ImageF& groundT
     m.boundaryP95 = pool[rank];
   }
   return m;
+}
+
+std::optional<const char*> groundTruthFlag(const ErrorMetrics& m) {
+  if (m.receivers == 0) return std::nullopt;
+  if (m.gtShadowReceivers == 0) return "entirely lit from the camera";
+  if (m.gtLitReceivers == 0) return "entirely unlit from the camera";
+  if (m.gtBoundaryPixels == 0) return "no shadow boundary";
+  return std::nullopt;
 }
 
 ImageF errorHeatMap(const ImageF& visibility, const ImageF& groundTruth) {

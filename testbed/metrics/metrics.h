@@ -30,7 +30,20 @@ struct ErrorMetrics {
   std::optional<double> softRmse; // RMSE against the area-light reference, if given
   int receivers = 0;              // number of receiver pixels
   int gtBoundaryPixels = 0;       // number of GT boundary pixels
+  // The denominators of the percentages, in pixels (0 receivers: not counted, as in a
+  // record written before they were): mismatch_pct's is `receivers`.
+  int gtLitReceivers = 0, gtShadowReceivers = 0;  // GT binary state of the receivers
+  int edgeBandPixels = 0;                         // edge_mismatch_pct's
+  int farShadowReceivers = 0;                     // leak_pct's
+  int farLitReceivers = 0;                        // overestimation_pct's
 };
+
+// Why a ground truth cannot rank techniques: every technique that agrees with it in the
+// large scores 0 error there, so such a frame is flagged and left out of statistics
+// (docs/ground-truth-and-metrics.md "Error metrics"). Returns "entirely lit from the camera",
+// "entirely unlit from the camera", "no shadow boundary", or nullopt (a usable frame, or
+// counts not known).
+std::optional<const char*> groundTruthFlag(const ErrorMetrics& metrics);
 
 // Conventions the documented definitions leave open:
 // - A boundary pixel (GT or technique) is a receiver with a 4-neighbour that is a receiver

@@ -253,3 +253,35 @@ TEST(Metrics, HeatMapColoursEachClass) {
 
 }  // namespace
 }  // namespace testbed
+
+namespace testbed {
+namespace {
+
+// Each percentage's denominator on a half-plane whose answers are counted by hand: shadow
+// x < 30 on 60 × 60; boundary pixels in columns 29 and 30; "far" beyond 8 px: columns
+// 0-20 and 39-59; the 3 px band: columns 26-33.
+TEST(MetricsDenominators, HalfPlaneCountsAndFlags) {
+  const ImageF gt = makeImage(60, 60, [](int x, int) { return x < 30 ? 0.f : 1.f; });
+  const ErrorMetrics m = computeErrorMetrics(gt, gt);
+  EXPECT_EQ(m.receivers, 3600);
+  EXPECT_EQ(m.gtShadowReceivers, 1800);
+  EXPECT_EQ(m.gtLitReceivers, 1800);
+  EXPECT_EQ(m.gtBoundaryPixels, 120);
+  EXPECT_EQ(m.farShadowReceivers, 21 * 60);
+  EXPECT_EQ(m.farLitReceivers, 21 * 60);
+  EXPECT_EQ(m.edgeBandPixels, 8 * 60);
+  EXPECT_FALSE(groundTruthFlag(m).has_value());
+
+  const ImageF lit = makeImage(10, 10, [](int, int) { return 1.f; });
+  EXPECT_STREQ(*groundTruthFlag(computeErrorMetrics(lit, lit)), "entirely lit from the camera");
+  const ImageF unlit = makeImage(10, 10, [](int, int) { return 0.f; });
+  EXPECT_STREQ(*groundTruthFlag(computeErrorMetrics(unlit, unlit)), "entirely unlit from the camera");
+  // Lit and shadowed receivers apart, a column of background between them: no boundary.
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const ImageF apart = makeImage(10, 10, [&](int x, int) { return x < 4 ? 0.f : x == 4 ? nan : 1.f; });
+  EXPECT_STREQ(*groundTruthFlag(computeErrorMetrics(apart, apart)), "no shadow boundary");
+  EXPECT_FALSE(groundTruthFlag(ErrorMetrics{}).has_value());  // not counted: no flag
+}
+
+}  // namespace
+}  // namespace testbed

@@ -34,6 +34,20 @@ std::string SweepCell::frameKey() const {
          std::to_string(shadowMap) + "|" + depthFormat;
 }
 
+std::string SweepCell::truthKey() const {
+  return scene + "|" + (subdivide ? std::to_string(*subdivide) : "-") + "|" + size;
+}
+
+std::vector<std::vector<std::pair<std::size_t, std::size_t>>> SweepPlan::readers() const {
+  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> out(cells.size());
+  const std::size_t columns = entries.empty() ? 0 : entries.front().size();
+  for (std::size_t c = 0; c < columns; ++c)
+    for (std::size_t r = 0; r < entries.size(); ++r)
+      for (std::size_t cell : entries[r][c])
+        if (out[cell].empty() || out[cell].back() != std::pair{r, c}) out[cell].emplace_back(r, c);
+  return out;
+}
+
 nlohmann::json SweepCell::toJson() const {
   nlohmann::json j = {{"scene", scene}, {"size", size}, {"shadow_map", shadowMap}, {"depth_format", depthFormat},
                       {"technique", technique}, {"params", params}};
@@ -51,7 +65,7 @@ SweepPlan planSweep(const SweepSpec& spec, const SweepOverrides& overrides) {
     if (fresh) plan.cells.push_back(std::move(cell));
     return it->second;
   };
-  std::map<std::string, std::size_t> truthOf;  // frame key → ground-truth cell
+  std::map<std::string, std::size_t> truthOf;  // truth key → ground-truth cell
   plan.entries.assign(spec.rows.size(), std::vector<std::vector<std::size_t>>(spec.columns.size()));
   for (std::size_t c = 0; c < spec.columns.size(); ++c) {
     for (std::size_t r = 0; r < spec.rows.size(); ++r) {
@@ -73,14 +87,14 @@ SweepPlan planSweep(const SweepSpec& spec, const SweepOverrides& overrides) {
       base.depthFormat =
           overrides.depthFormat.value_or(firstOf<std::string>({&col.depthFormat, &row.depthFormat, &top.depthFormat}).value_or("16"));
 
-      const auto truth = truthOf.find(base.frameKey());
+      const auto truth = truthOf.find(base.truthKey());
       if (truth == truthOf.end()) {
         SweepCell gt = base;
         gt.technique = kGroundTruthId;
         gt.truthCell = plan.cells.size();
-        truthOf[base.frameKey()] = add(gt);
+        truthOf[base.truthKey()] = add(gt);
       }
-      base.truthCell = truthOf.at(base.frameKey());
+      base.truthCell = truthOf.at(base.truthKey());
       for (const auto& technique : spec.rows[r].techniques) {
         SweepCell cell = base;
         cell.technique = technique;

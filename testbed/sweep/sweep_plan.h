@@ -1,8 +1,10 @@
 #pragma once
 // A spec expanded into cells, the units of work of a sweep: one technique with its
 // parameters on one scene at one output size, shadow-map size and depth format. Equal
-// cells are run once however many table entries use them; every frame set-up gets a
-// ground-truth cell (its errors need it, and the papers time shadow volumes too).
+// cells are run once however many table entries use them; every scene and output size
+// gets one ground-truth cell (its errors need it, and the papers time shadow volumes
+// too): the shadow volumes use no shadow map, so every map size and depth format of the
+// frame shares it.
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -31,10 +33,12 @@ struct SweepCell {
   std::string depthFormat = "16";
   std::string technique;               // registry id or "groundtruth"
   std::map<std::string, std::string> params;  // the technique's own names → value text
-  std::size_t truthCell = 0;           // the ground-truth cell of the same frame set-up
+  std::size_t truthCell = 0;           // the ground-truth cell of the same frame
 
-  // Identifies the frame set-up (scene, subdivision, sizes, depth format).
+  // Identifies the frame set-up (scene, subdivision, sizes, depth format): one FrameRunner.
   std::string frameKey() const;
+  // Identifies the frame the ground truth depends on (scene, subdivision, output size).
+  std::string truthKey() const;
   nlohmann::json toJson() const;
 };
 
@@ -43,6 +47,10 @@ struct SweepPlan {
   // entries[row][column]: the cells (one per technique of the row) a table entry reads.
   std::vector<std::vector<std::vector<std::size_t>>> entries;
   int repeat = 1;
+
+  // The (row, column) entries that read each cell, in column-major order; empty for a
+  // ground-truth cell that only serves as a reference.
+  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> readers() const;
 };
 
 SweepPlan planSweep(const SweepSpec& spec, const SweepOverrides& overrides);

@@ -84,8 +84,13 @@ SweepTable buildSweepTable(const SweepSpec& spec, const SweepPlan& plan, const s
   table.citation = spec.citation;
   table.note = spec.note;
   table.unit = std::string(spec.measure->unit());
+  table.measure = std::string(spec.measure->name);
+  table.errorMeasure = spec.measure->path.starts_with("/error/");
   table.digits = spec.measure->digits;
   for (const auto& column : spec.columns) table.columns.push_back(column.label);
+  table.paperColumns.assign(spec.columns.size(), false);
+  for (const auto& row : spec.rows)
+    for (std::size_t c = 0; c < row.paper.size(); ++c) table.paperColumns[c] = table.paperColumns[c] || row.paper[c].has_value();
   for (const auto& [cell, record] : records) {
     const std::string& backend = record.backend;
     if (!table.backend.empty() && table.backend != backend)
@@ -139,12 +144,19 @@ SweepTable buildSweepTable(const SweepSpec& spec, const SweepPlan& plan, const s
 
 std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& header) {
   std::ostringstream md;
+  const bool anyPaper = std::find(table.paperColumns.begin(), table.paperColumns.end(), true) != table.paperColumns.end();
+  auto paperShown = [&](std::size_t c) { return c < table.paperColumns.size() && table.paperColumns[c]; };
   md << "# " << (table.title.empty() ? table.name : table.title) << "\n\n";
-  md << "Paper: " << table.citation << ". Unit: " << table.unit;
+  if (!table.citation.empty()) md << "Paper: " << table.citation << ". ";
+  else if (!anyPaper) md << "A study of one's own (no paper's figures). ";
+  md << "Measure: `" << table.measure << "`" << (table.unit.empty() ? "" : " (" + table.unit + ")");
   if (table.unit == "ms" || table.unit == "fps")
     md << " of the whole frame (G-buffer and every pass of the technique, shadow map included)";
   md << ".";
-  if (table.hasRatios) md << " `×SM`: cost relative to shadow mapping in the same column (time, or memory), ours against ours and the paper's against the paper's.";
+  if (table.hasRatios)
+    md << (table.errorMeasure ? " `×SM`: error relative to shadow mapping in the same column"
+                              : " `×SM`: cost relative to shadow mapping in the same column (time, or memory)")
+       << (anyPaper ? ", ours against ours and the paper's against the paper's." : ".");
   md << "\n\n";
   for (const auto& [name, value] : header) md << "- " << name << ": " << value << "\n";
   if (!header.empty()) md << "\n";
@@ -152,11 +164,19 @@ std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& heade
 
   const bool groups = std::any_of(table.rows.begin(), table.rows.end(), [](const auto& r) { return !r.group.empty(); });
   md << "|" << (groups ? " |" : "") << " technique |";
-  for (const auto& c : table.columns) md << " " << c << " ours | " << c << " paper |";
+  std::size_t n = 0;
+  for (std::size_t c = 0; c < table.columns.size(); ++c) {
+    md << " " << table.columns[c] << (anyPaper ? " ours" : "") << " |";
+    if (paperShown(c)) md << " " << table.columns[c] << " paper |";
+    n += paperShown(c) ? 2 : 1;
+  }
   if (table.hasRatios)
-    for (const auto& c : table.columns) md << " " << c << " ours ×SM | " << c << " paper ×SM |";
+    for (std::size_t c = 0; c < table.columns.size(); ++c) {
+      md << " " << table.columns[c] << (anyPaper ? " ours" : "") << " ×SM |";
+      if (paperShown(c)) md << " " << table.columns[c] << " paper ×SM |";
+      n += paperShown(c) ? 2 : 1;
+    }
   md << "\n|" << (groups ? "---|" : "") << "---|";
-  const std::size_t n = table.columns.size() * (table.hasRatios ? 4 : 2);
   for (std::size_t i = 0; i < n; ++i) md << "---:|";
   md << "\n";
   std::string lastGroup;
@@ -166,10 +186,15 @@ std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& heade
     if (groups) md << " " << (r == 0 || row.group != lastGroup ? row.group : "") << " |";
     lastGroup = row.group;
     md << " " << row.label << (row.notMeasured.empty() ? "" : " †") << " |";
-    for (std::size_t c = 0; c < table.columns.size(); ++c) md << " " << number(row.ours[c], table.digits) << " | " << number(row.paper[c], table.digits) << " |";
+    for (std::size_t c = 0; c < table.columns.size(); ++c) {
+      md << " " << number(row.ours[c], table.digits) << " |";
+      if (paperShown(c)) md << " " << number(row.paper[c], table.digits) << " |";
+    }
     if (table.hasRatios)
-      for (std::size_t c = 0; c < table.columns.size(); ++c)
-        md << " " << number(row.oursRatio[c], 2) << " | " << number(row.paperRatio[c], 2) << " |";
+      for (std::size_t c = 0; c < table.columns.size(); ++c) {
+        md << " " << number(row.oursRatio[c], 2) << " |";
+        if (paperShown(c)) md << " " << number(row.paperRatio[c], 2) << " |";
+      }
     md << "\n";
   }
   std::set<std::string> footnotes;  // each row label and reason once, however many groups repeat it
@@ -187,8 +212,10 @@ json sweepTableJson(const SweepTable& table, const SweepHeader& header) {
                     {"ours_ratio", optionals(row.oursRatio)}, {"paper_ratio", optionals(row.paperRatio)}});
   json head = json::object();
   for (const auto& [name, value] : header) head[name] = value;
+  const bool anyPaper = std::find(table.paperColumns.begin(), table.paperColumns.end(), true) != table.paperColumns.end();
   return {{"name", table.name},       {"title", table.title}, {"citation", table.citation},
-          {"unit", table.unit},       {"backend", table.backend}, {"columns", table.columns},
+          {"unit", table.unit},       {"measure", table.measure}, {"backend", table.backend},
+          {"columns", table.columns}, {"paper_columns", table.paperColumns}, {"has_paper", anyPaper},
           {"has_ratios", table.hasRatios}, {"rows", rows}, {"header", head}};
 }
 

@@ -22,7 +22,12 @@ struct SweepTableRow {
 
 struct SweepTable {
   std::string name, title, citation, note, unit, backend;
+  std::string measure;       // the metric table's name of what the table's numbers are
+  bool errorMeasure = false;  // an error metric (its ratio to sm is an error ratio, not a cost)
   std::vector<std::string> columns;
+  // Per column: whether any row has the paper's figure there. Columns without are left
+  // out (a study of one's own has none at all).
+  std::vector<bool> paperColumns;
   std::vector<SweepTableRow> rows;
   int digits = 2;          // decimals of the measure (the metric table's)
   bool hasRatios = false;  // false when the table has no `sm` row to divide by

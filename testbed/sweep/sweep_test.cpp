@@ -1,6 +1,9 @@
 // Sweep specs, cells, shards and tables without a GL context: validation messages, the
 // shard partition, the paper specs' shapes and the table arithmetic.
+#include <unistd.h>
+
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -9,6 +12,7 @@
 
 #include "testbed/core/error.h"
 #include "testbed/sweep/sweep_plan.h"
+#include "testbed/sweep/sweep_records.h"
 #include "testbed/sweep/sweep_spec.h"
 #include "testbed/sweep/sweep_table.h"
 #include "testbed/scene/scene.h"
@@ -67,7 +71,7 @@ TEST(SweepSpec, MistakesNameTheFileAndTheKey) {
       {"/rows/2/params/kernel", 3, "rows[2].params.kernel: expected a key \"technique.name\""},
       {"/scenes/wall", "no-such-scene.json", "scenes.wall: no such scene file"},
       {"/columns/2/scene", "dragon", "columns[2].scene: 'dragon' is not in \"scenes\""},
-      {"/measure", "joules", "measure: expected frame_ms, fps or memory_mb"},
+      {"/measure", "joules", "measure: expected a metric of the metric table"},
       {"/name", "Table 2", "name: expected lower-case"},
       {"/figure", json{{"column", 7}}, "figure.column: 7 is outside 0..2"},
   };
@@ -103,17 +107,23 @@ TEST(SweepSpec, MissingOrBrokenFileIsNamed) {
 
 TEST(SweepPlan, EqualCellsRunOnceAndEveryFrameHasItsGroundTruth) {
   const SweepPlan plan = planSweep(parseSweepSpec(tinySpec(), kSpecFile), {});
-  // 3 frame set-ups (64², 128², bunny at 1024²) × (groundtruth, sm, vsm, esm, pcf).
+  // 3 frame set-ups (64², 128², bunny at 1024²) × (groundtruth, sm, vsm, esm, pcf): the
+  // SV row times shadow volumes in every column.
   EXPECT_EQ(plan.cells.size(), 15u);
   EXPECT_EQ(plan.entries[1][0].size(), 2u);  // PF: the mean of vsm and esm
-  EXPECT_EQ(plan.entries[3][1].front(), plan.cells[plan.entries[0][1].front()].truthCell);
+  // The wall's reference is the 64² column's ground truth for the 128² column too.
+  EXPECT_EQ(plan.entries[3][0].front(), plan.cells[plan.entries[0][1].front()].truthCell);
+  EXPECT_NE(plan.entries[3][1].front(), plan.cells[plan.entries[0][1].front()].truthCell);
   std::set<std::string> frames;
+  std::set<std::size_t> truths;
   for (const auto& cell : plan.cells) {
     frames.insert(cell.frameKey());
+    truths.insert(cell.truthCell);
     EXPECT_EQ(plan.cells[cell.truthCell].technique, "groundtruth");
-    EXPECT_EQ(plan.cells[cell.truthCell].frameKey(), cell.frameKey());
+    EXPECT_EQ(plan.cells[cell.truthCell].truthKey(), cell.truthKey());
   }
   EXPECT_EQ(frames.size(), 3u);
+  EXPECT_EQ(truths.size(), 2u);  // wall and bunny, at 160x90
   EXPECT_EQ(plan.cells[plan.entries[2][0].front()].params.at("kernel"), "5");
   EXPECT_TRUE(plan.cells[plan.entries[1][0][1]].params.empty());  // vsm.blur is vsm's alone
 }
@@ -259,6 +269,115 @@ TEST(SweepPaperSpecs, SceneTriangleCountsMatchThePapers) {
     for (const auto& object : scene.objects) triangles += double(object.mesh.n_faces());
     EXPECT_NEAR(triangles, paper, 0.1 * paper) << file;
   }
+}
+
+}  // namespace
+}  // namespace testbed
+
+namespace testbed {
+namespace {
+
+// A folder of scene files as `testbed corpus` writes them (with its manifest.json).
+struct SceneFolder {
+  fs::path dir = fs::temp_directory_path() / ("testbed-sweep-scenes-" + std::to_string(::getpid()));
+  SceneFolder() {
+    fs::create_directories(dir);
+    for (const char* name : {"wall.json", "bunny.json"})
+      fs::copy_file(fs::path(TESTBED_SOURCE_DIR) / "scenes" / name, dir / name, fs::copy_options::overwrite_existing);
+    std::ofstream(dir / "manifest.json") << "{}\n";
+  }
+  ~SceneFolder() { fs::remove_all(dir); }
+};
+
+json studySpec(const json& scenes) {
+  return {{"name", "study"}, {"scenes", scenes}, {"settings", {{"size", "160x90"}}}, {"measure", "mismatch_pct"},
+          {"axes", {{"shadow_map", {64, 128}}}}, {"techniques", {"sm", "pcf"}}};
+}
+
+TEST(SweepStudy, ScenesAsAnAxisExpandScenesTechniquesAndSizes) {
+  const SceneFolder folder;
+  for (const json& scenes : {json(folder.dir.string()), json((folder.dir / "*.json").string()),
+                             json::array({(folder.dir / "bunny.json").string(), (folder.dir / "wall.json").string()})}) {
+    const SweepSpec spec = parseSweepSpec(studySpec(scenes), kSpecFile);
+    ASSERT_EQ(spec.scenes.size(), 2u) << scenes;  // the manifest is not a scene
+    ASSERT_EQ(spec.columns.size(), 4u);
+    EXPECT_EQ(spec.columns[0].label, "bunny · 64²");
+    EXPECT_EQ(spec.columns[3].label, "wall · 128²");
+    ASSERT_EQ(spec.rows.size(), 2u);
+    EXPECT_EQ(spec.rows[1].label, "pcf");
+    EXPECT_EQ(spec.measure->name, "mismatch_pct");
+    // The expanded list is part of the spec's identity (what shards fingerprint).
+    EXPECT_TRUE(spec.document["scenes"].is_object());
+    EXPECT_EQ(spec.document["scene_order"], json({"bunny", "wall"}));
+    const SweepPlan plan = planSweep(spec, {});
+    EXPECT_EQ(plan.cells.size(), 2u + 2u * 2u * 2u);  // one ground truth per scene, not per map size
+    // Re-read as a shard's spec.json, without the folder: the same plan.
+    const SweepSpec again = parseSweepSpec(spec.document, kSpecFile, false);
+    EXPECT_EQ(planSweep(again, {}).cells.size(), plan.cells.size());
+    EXPECT_EQ(again.columns[0].label, "bunny · 64²");
+  }
+}
+
+TEST(SweepStudy, RowsVaryParametersAndNeedNoPaperFigures) {
+  json spec = tinySpec();
+  spec["rows"] = {{{"techniques", {"pcf"}}, {"vary", {{"pcf.kernel", {3, 5, 7}}}}}, {{"techniques", {"sm"}}}};
+  const SweepSpec parsed = parseSweepSpec(spec, kSpecFile);
+  ASSERT_EQ(parsed.rows.size(), 4u);
+  EXPECT_EQ(parsed.rows[1].label, "pcf kernel=5");
+  EXPECT_EQ(parsed.rows[1].set.params.at("pcf.kernel"), "5");
+  const SweepPlan plan = planSweep(parsed, {});
+  EXPECT_EQ(plan.cells[plan.entries[2][0].front()].params.at("kernel"), "7");
+  // Without the paper's figures the table has no paper columns.
+  const std::string md = sweepTableMarkdown(buildSweepTable(parsed, plan, {}), {});
+  EXPECT_EQ(md.find("paper"), std::string::npos) << md;
+  EXPECT_NE(md.find("| technique | a | b | c | a ×SM |"), std::string::npos) << md;
+  EXPECT_NE(md.find("Measure: `frame_ms` (ms)"), std::string::npos) << md;
+}
+
+TEST(SweepStudy, RecordsNameTheirRowAndColumn) {
+  const SweepSpec spec = parseSweepSpec(tinySpec(), kSpecFile);
+  const SweepPlan plan = planSweep(spec, {});
+  Record record;
+  record.cell = plan.entries[2][1].front();  // PCF in column b
+  json j = sweepRecordJson(record, spec, plan);
+  EXPECT_EQ(j["row"], "PCF");
+  EXPECT_EQ(j["column"], "b");
+  record.cell = plan.entries[3][0].front();  // the wall's ground truth, read by SV in column a
+  j = sweepRecordJson(record, spec, plan);
+  EXPECT_EQ(j["row"], "SV");
+  EXPECT_EQ(j["column"], "a");
+}
+
+TEST(SweepStudy, BadScenesAndMeasuresNameTheField) {
+  const SceneFolder folder;
+  const fs::path empty = folder.dir / "empty";
+  fs::create_directories(empty);
+  struct Case {
+    json spec;
+    std::string expected;
+  };
+  json unknownMetric = studySpec(folder.dir.string());
+  unknownMetric["measure"] = "joules";
+  json ratio = studySpec(folder.dir.string());
+  ratio["measure"] = "x_sm";
+  json both = studySpec(folder.dir.string());
+  both["columns"] = json::array({{{"label", "a"}}});
+  const std::vector<Case> cases = {
+      {studySpec((folder.dir / "missing").string()), "scenes: no such scene file or folder"},
+      {studySpec((folder.dir / "*.scene").string()), "scenes: '" + (folder.dir / "*.scene").string() + "' matches no scene file"},
+      {studySpec(empty.string()), "scenes: the folder " + empty.string() + " holds no scene file"},
+      {studySpec(json::array({(folder.dir / "wall.json").string(), 3})), "scenes[1]: expected a string"},
+      {studySpec(json::array()), "scenes: expected scene files"},
+      {unknownMetric, "measure: expected a metric of the metric table (gpu_ms.total"},
+      {ratio, "(a ratio to sm"},
+      {both, "axes: give \"columns\" or \"axes\", not both"},
+  };
+  for (const auto& c : cases) {
+    const std::string message = errorOf(c.spec);
+    EXPECT_EQ(message.rfind(kSpecFile.string() + ": ", 0), 0u) << message;
+    EXPECT_NE(message.find(c.expected), std::string::npos) << message;
+  }
+  EXPECT_EQ(errorOf(studySpec(folder.dir.string())), "");
 }
 
 }  // namespace
