@@ -8,6 +8,7 @@
 #include "testbed/app/commands.h"
 #include "testbed/app/plugins.h"
 #include "testbed/core/error.h"
+#include "testbed/scene/animation.h"
 #include "testbed/viewer/viewer.h"
 
 namespace testbed {

@@ -12,6 +12,7 @@
 #include "testbed/harness/timing.h"
 #include "testbed/metrics/metrics.h"
 #include "testbed/metrics/temporal_metrics.h"
+#include "testbed/scene/animation.h"
 
 namespace testbed::viewer {
 
@@ -52,7 +53,7 @@ class LiveView {
   // does (advanceTo). The running temporal figures go on when `frame` is the one after the
   // shown frame and start again from it otherwise. No-op without animation.
   void showFrame(int frame);
-  bool animated() const { return scene_.animation.has_value(); }
+  bool animated() const { return scene_.animation != nullptr; }
   int animationFrame() const { return animationFrame_; }
   int animationFrames() const { return animated() ? scene_.animation->frames : 1; }
   // Up to date after renderFrame() (the first frame it renders of each animation frame).

@@ -101,6 +101,11 @@ class Viewer {
     live_.renderFrame();
     display_.upload(live_.image());
     display_.draw(framebuffer, imageRect);
+    // ImGui's backend puts back the program current before it drew. That may be one of a
+    // session destroyed this frame (the ground truth's, rendered again whenever the view
+    // changes): still current, it outlived its deletion only until ImGui replaced it, and
+    // putting it back would be GL_INVALID_VALUE. None current, there is nothing to put back.
+    glUseProgram(0);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     if (windowShot) saveWindow(options_.script[next_ - 1].text, framebuffer);
