@@ -23,6 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include "testbed/io/image_io.h"
+#include "testbed/scene/animation.h"
 #include "testbed/technique/registry.h"
 #include "testbed/viewer/panel.h"
 #include "testbed/viewer/viewer.h"
@@ -283,12 +284,118 @@ TEST_F(ViewerTest, PluginTechniquesAreShownLikeInTreeOnes) {
   EXPECT_EQ(maxStepDifference(testbed::readImage(shot), render(scene("wall.json"), "sm")), 0);
 }
 
+// Playback (docs/viewer.md "Playing an animated scene"). The spinning occluder: only an
+// object moves, so every figure depends on the object's upload and the caches keyed on it.
+fs::path spinning() { return scene("motion/spinning_occluder.json"); }
+
+// The animated scene frozen at `frame`: its animated objects' poses written as their
+// `rotate`/`translate`/`scale` (floats printed exactly), the animation block dropped.
+fs::path frozenAt(const fs::path& animatedFile, int frame, const fs::path& out) {
+  const testbed::Scene scene = testbed::loadScene(animatedFile);
+  json document = json::parse(readFile(animatedFile));
+  for (const auto& track : scene.animation->objects) {
+    const testbed::ObjectPose pose = testbed::poseAt(track, frame);
+    auto vec = [](glm::vec3 v) { return json::array({double(v.x), double(v.y), double(v.z)}); };
+    json& object = document["objects"][track.object];
+    object["rotate"] = vec(pose.rotateDegrees);
+    object["translate"] = vec(pose.translate);
+    object["scale"] = vec(pose.scale);
+  }
+  document.erase("animation");
+  return writeFile(out, document.dump());
+}
+
+// Seeking to frame k shows what `render` shows of frame k, and its error is the one
+// `compare --frames k:k` records for that frame.
+TEST_F(ViewerTest, SeekingShowsTheFrameThatRenderRendersAtThatFrame) {
+  const int k = 29;
+  const fs::path shot = dir_ / "frame.exr", metrics = dir_ / "frame.json";
+  const RunResult run = view(with({"--scene", spinning().string(), "--technique", "sm", "--script",
+                             writeScript("seek " + std::to_string(k) + "\nmode visibility\nscreenshot " + shot.string() +
+                                         "\nmetrics " + metrics.string() + "\nquit\n")
+                                 .string()},
+                            kCommon));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const fs::path frozen = frozenAt(spinning(), k, dir_ / "frozen.json");
+  render(frozen, "sm");
+  const testbed::ImageF fromView = testbed::readImage(shot);
+  const testbed::ImageF fromRender = testbed::readImage(dir_ / "render-0" / "sm.exr");
+  ASSERT_EQ(fromView.width, fromRender.width);
+  ASSERT_EQ(fromView.height, fromRender.height);
+  int receivers = 0, different = 0;
+  for (int y = 0; y < fromRender.height; ++y)
+    for (int x = 0; x < fromRender.width; ++x) {
+      if (std::isnan(fromRender.at(x, y))) continue;  // shown as the background grey
+      ++receivers;
+      different += fromView.at(x, y) != fromRender.at(x, y);
+    }
+  EXPECT_GT(receivers, 0);
+  EXPECT_EQ(different, 0) << "of " << receivers << " receivers";
+
+  const fs::path out = dir_ / "compare";
+  const RunResult compare = testbed(with({"compare", "--scene", spinning().string(), "--techniques", "sm", "--frames",
+                                          std::to_string(k) + ":" + std::to_string(k), "--no-plot", "--out", out.string()},
+                                         kCommon));
+  ASSERT_EQ(compare.exitCode, 0) << compare.err;
+  const json record = json::parse(readFile(metrics));
+  EXPECT_EQ(record.at("frame").get<int>(), k);
+  EXPECT_EQ(record.at("error"), json::parse(readFile(out / "sm_frames.json"))[0].at("error"));
+}
+
+// Stepping frame by frame and playing both give the running flicker that `compare
+// --frames 0:6` pools over the same frames (same code, same images: equal to 1e-12, the
+// room left for summation order; the denominators exactly). `compare` runs on the
+// viewer's rasterizer (--backend glfw), so filtered techniques match bit for bit too.
+TEST_F(ViewerTest, RunningFlickerAfterSteppingOrPlayingIsTheSequenceRecords) {
+  const fs::path sm = dir_ / "sm.json", pcf = dir_ / "pcf.json", back = dir_ / "back.json";
+  const RunResult run = view(with({"--scene", spinning().string(), "--technique", "sm", "--script",
+                             writeScript("step\nstep\nstep\nstep\nstep\nstep\nmetrics " + sm.string() +
+                                         "\nstep -2\nmetrics " + back.string() +
+                                         "\ntechnique pcf\nseek 0\nplay\nframes 5\npause\nmetrics " + pcf.string() +
+                                         "\nquit\n")
+                                 .string()},
+                            kCommon));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const fs::path out = dir_ / "compare";
+  const RunResult compare = testbed(with({"compare", "--scene", spinning().string(), "--techniques", "sm,pcf",
+                                          "--frames", "0:6", "--backend", "glfw", "--no-plot", "--out", out.string()},
+                                         kCommon),
+                                    xvfb_->display());
+  ASSERT_EQ(compare.exitCode, 0) << compare.err;
+
+  auto expectSameFigures = [&](const json& viewRecord, const std::string& id) {
+    SCOPED_TRACE(id);
+    ASSERT_EQ(viewRecord.at("frame").get<int>(), 6);
+    const json& live = viewRecord.at("temporal");
+    const json sequence = json::parse(readFile(out / (id + "_sequence.json"))).at("temporal");
+    EXPECT_EQ(live.at("first_frame").get<int>(), 0);
+    EXPECT_EQ(live.at("frame_pairs"), sequence.at("frame_pairs"));
+    EXPECT_EQ(live.at("stable_pairs"), sequence.at("stable_pairs"));
+    EXPECT_GT(sequence.at("flicker").get<double>(), 0.0) << "the occluder moves: its shadow's edges flicker";
+    for (const char* figure : {"flicker", "crawl_pct", "crawl_missed_pct"})
+      EXPECT_NEAR(live.at(figure).get<double>(), sequence.at(figure).get<double>(), 1e-12) << figure;
+    EXPECT_EQ(viewRecord.at("error"), json::parse(readFile(out / (id + "_frames.json")))[6].at("error"));
+  };
+  expectSameFigures(json::parse(readFile(sm)), "sm");
+  // Play shows one animation frame per displayed frame: `play` at frame 0, then six
+  // displayed frames (five of `frames 5`, one of `pause`) reach frame 6.
+  expectSameFigures(json::parse(readFile(pcf)), "pcf");
+
+  // A step back is no pair of consecutive frames: the running figures start again there.
+  const json viewBack = json::parse(readFile(back));
+  EXPECT_EQ(viewBack.at("frame").get<int>(), 4);
+  EXPECT_EQ(viewBack.at("temporal").at("first_frame").get<int>(), 4);
+  EXPECT_EQ(viewBack.at("temporal").at("frame_pairs").get<int>(), 0);
+}
+
 // Bad input fails with exit 2 and one line before any window opens: these run without a
 // display, where opening one would fail differently (exit 1).
 TEST(ViewerBadInput, ExitsTwoWithOneLineBeforeAnyWindow) {
   const TempDir dir("testbed-viewer-bad");
   writeFile(dir / "bad.txt", "orbit 10 0\n\nmode sepia\n");
   writeFile(dir / "set.txt", "technique pcf\nset kernel=4\n");
+  writeFile(dir / "play.txt", "play\n");
+  writeFile(dir / "seek.txt", "seek 48\n");
   const std::string wall = scene("wall.json").string();
   struct Case {
     std::vector<std::string> args;
@@ -306,6 +413,8 @@ TEST(ViewerBadInput, ExitsTwoWithOneLineBeforeAnyWindow) {
       {{"--scene", wall, "--frames", "0"}, "--frames: 0 is outside 1..100000"},
       {{"--scene", wall, "--screenshot", (dir / "x.png").string()}, "--frames"},
       {{"--scene", wall, "--size", "12x"}, "--size"},
+      {{"--scene", wall, "--script", (dir / "play.txt").string()}, (dir / "play.txt").string() + ":1: the scene has no animation"},
+      {{"--scene", spinning().string(), "--script", (dir / "seek.txt").string()}, (dir / "seek.txt").string() + ":1: seek:"},
   };
   for (const auto& c : cases) {
     const RunResult run = testbed(with({"view"}, c.args));

@@ -8,6 +8,7 @@
 #include "testbed/app/commands.h"
 #include "testbed/app/plugins.h"
 #include "testbed/core/error.h"
+#include "testbed/scene/animation.h"
 #include "testbed/viewer/viewer.h"
 
 namespace testbed {
@@ -57,7 +58,9 @@ CommandRunner addViewCommand(CLI::App& app) {
     view.windowScreenshot = options->windowScreenshot;
     view.outDir = options->common.out;
     view.scene = loadScene(options->scene);
-    if (!options->script.empty()) view.script = viewer::readScript(options->script, view.technique->info->id);
+    if (!options->script.empty())
+      view.script = viewer::readScript(options->script, view.technique->info->id,
+                                       view.scene.animation ? view.scene.animation->frames : 0);
     view.settings = settings;
 
     auto context = createGlfwContext({64, 64}, "testbed view: " + view.scene.name);

@@ -64,6 +64,8 @@ InputResult Input::poll(GLFWwindow* window, const Rect& view, CameraDesc& camera
   result.screenshot = pressedOnce(window, GLFW_KEY_P);
   result.resetView = pressedOnce(window, GLFW_KEY_R);
   result.quit = pressedOnce(window, GLFW_KEY_ESCAPE);
+  result.togglePlay = pressedOnce(window, GLFW_KEY_SPACE);
+  result.step = int(pressedOnce(window, GLFW_KEY_RIGHT)) - int(pressedOnce(window, GLFW_KEY_LEFT));
   return result;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // Mouse and keyboard over the 3D view: left drag orbits, right or middle drag pans, the
 // wheel zooms, WASD/QE fly (shift: 4× faster), ctrl+left drag moves the light; P saves a
-// screenshot, R resets the view, Esc quits. Nothing reaches the view while ImGui wants the
+// screenshot, R resets the view, Esc quits; on an animated scene space plays or pauses and
+// the left / right arrows step one frame back / on. Nothing reaches the view while ImGui wants the
 // mouse or the keyboard (a widget is hovered or being typed into).
 #include "testbed/scene/scene.h"
 #include "testbed/viewer/display.h"
@@ -13,6 +14,8 @@ namespace testbed::viewer {
 struct InputResult {
   bool cameraMoved = false, lightMoved = false;
   bool screenshot = false, resetView = false, quit = false;
+  bool togglePlay = false;
+  int step = 0;  // animation frames: -1 back, +1 on
 };
 
 class Input {

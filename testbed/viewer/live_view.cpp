@@ -1,5 +1,6 @@
 #include "testbed/viewer/live_view.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -8,6 +9,8 @@
 #include "groundtruth/shadow_volumes.h"
 #include "testbed/core/error.h"
 #include "testbed/harness/record.h"
+#include "testbed/harness/sequence.h"
+#include "testbed/scene/view.h"
 
 namespace testbed::viewer {
 namespace {
@@ -54,6 +57,7 @@ void LiveView::rebuildRunner() {
   runner_.reset();
   runner_ = std::make_unique<FrameRunner>(scene_, settings_);
   ++generation_;
+  restartTemporal();
   if (technique_) startSession();
 }
 
@@ -61,6 +65,7 @@ void LiveView::startSession() {
   session_.reset();  // its GL objects go before the new ones are booked
   session_ = std::make_unique<TechniqueSession>(*runner_, *technique_, parameters_);
   history_.clear();
+  restartTemporal();
 }
 
 void LiveView::setTechnique(const RegisteredTechnique& technique, const std::map<std::string, std::string>& assignments) {
@@ -85,11 +90,56 @@ void LiveView::setShadowMap(int size, DepthFormat format) {
 void LiveView::cameraMoved() {
   runner_->renderGBuffer();
   ++generation_;
+  restartTemporal();
 }
 
 void LiveView::lightMoved() {
   runner_->lightMoved();
   ++generation_;
+  restartTemporal();
+}
+
+void LiveView::showFrame(int frame) {
+  if (!animated()) return;
+  frame = std::clamp(frame, 0, animationFrames() - 1);
+  if (frame == animationFrame_) return;
+  const bool next = frame == animationFrame_ + 1;
+  advanceTo(scene_, *runner_, frame);
+  animationFrame_ = frame;
+  ++generation_;
+  if (!next) restartTemporal();
+  playbackStale_ = true;
+}
+
+// A change that is not the next animation frame (another technique, a moved camera, a jump)
+// makes the frames before it no sequence with the ones after: the figures start again.
+void LiveView::restartTemporal() {
+  temporal_ = TemporalAccumulator();
+  playback_ = PlaybackFigures{};
+  playback_.firstFrame = animationFrame_;
+  playbackStale_ = true;
+}
+
+// The shown frame against the ground truth, then added to the running temporal figures,
+// exactly as runSequence adds a compared frame.
+void LiveView::addToPlayback() {
+  playbackStale_ = false;
+  const ImageF& truth = groundTruth();
+  playback_.note.clear();
+  try {
+    playback_.error = computeErrorMetrics(visibility_, truth);
+  } catch (const std::invalid_argument& error) {
+    playback_.error.reset();
+    playback_.note = error.what();
+  }
+  const glm::ivec2 size = settings_.size;
+  const glm::mat4 viewProjection = cameraTransforms(scene_.camera, float(size.x) / float(size.y)).viewProjection();
+  try {
+    temporal_.addFrame(TemporalFrame{animationFrame_, visibility_, truth, runner_->positions(), viewProjection});
+  } catch (const std::invalid_argument& error) {
+    playback_.note = error.what();
+  }
+  playback_.temporal = temporal_.result();
 }
 
 void LiveView::setMode(DisplayMode mode, std::string debugImage) {
@@ -105,6 +155,7 @@ void LiveView::renderFrame() {
   history_.push_back({lastFrame_.times, lastFrame_.cpuMs});
   if (history_.size() > kHistoryFrames) history_.pop_front();
   ++frames_;
+  if (animated() && playbackStale_) addToPlayback();
   rebuildImage();
 }
 
@@ -157,7 +208,14 @@ nlohmann::json LiveView::record() {
   run.memoryBytes = memoryBytes();
   Record record = makeRecord(run, *runner_, backend_);
   record.error = errorMetrics();
-  return record;
+  nlohmann::json json = record;
+  if (!animated()) return json;
+  const TemporalMetrics& t = playback_.temporal;
+  json["frame"] = animationFrame_;
+  json["temporal"] = {{"first_frame", playback_.firstFrame}, {"flicker", t.flicker},
+                      {"crawl_pct", t.crawlPct},           {"crawl_missed_pct", t.crawlMissedPct},
+                      {"stable_pairs", t.stablePairs},      {"frame_pairs", t.framePairs}};
+  return json;
 }
 
 }  // namespace testbed::viewer

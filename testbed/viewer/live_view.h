@@ -11,12 +11,24 @@
 #include "testbed/harness/frame_runner.h"
 #include "testbed/harness/timing.h"
 #include "testbed/metrics/metrics.h"
+#include "testbed/metrics/temporal_metrics.h"
+#include "testbed/scene/animation.h"
 
 namespace testbed::viewer {
 
 enum class DisplayMode { Shaded, Visibility, Error, Debug };
 const char* displayModeName(DisplayMode mode);
 DisplayMode parseDisplayMode(const std::string& name);  // "shaded", ...; throws InputError
+
+// An animated scene's figures as it is played: the shown frame's error against the ground
+// truth and the temporal figures pooled over the frames shown one after the other
+// (TemporalAccumulator, the code `compare --frames` uses).
+struct PlaybackFigures {
+  int firstFrame = 0;                  // where the running figures started
+  std::optional<ErrorMetrics> error;   // of the shown frame; none when it has no receiver
+  std::string note;                    // why there is no error (or no temporal figure)
+  TemporalMetrics temporal;            // pooled since firstFrame
+};
 
 struct FrameSample {
   PassTimes times;
@@ -37,6 +49,16 @@ class LiveView {
   void cameraMoved();
   void lightMoved();
 
+  // An animated scene: moves it to `frame` (clamped to its frames) as `compare --frames`
+  // does (advanceTo). The running temporal figures go on when `frame` is the one after the
+  // shown frame and start again from it otherwise. No-op without animation.
+  void showFrame(int frame);
+  bool animated() const { return scene_.animation != nullptr; }
+  int animationFrame() const { return animationFrame_; }
+  int animationFrames() const { return animated() ? scene_.animation->frames : 1; }
+  // Up to date after renderFrame() (the first frame it renders of each animation frame).
+  const PlaybackFigures& playback() const { return playback_; }
+
   void setMode(DisplayMode mode, std::string debugImage = {});
   DisplayMode mode() const { return mode_; }
   const std::string& debugImageName() const { return debugImage_; }
@@ -56,7 +78,9 @@ class LiveView {
   // Error metrics of the last frame against the ground truth (rendered if stale). Throws
   // std::invalid_argument when the frame has no receiver or NaN on one.
   ErrorMetrics errorMetrics();
-  // The record `render` would write for this frame, with its error block.
+  // The record `render` would write for this frame, with its error block; an animated
+  // scene's also with "frame" and "temporal" (the running figures, as sequence records
+  // name them, plus first_frame).
   nlohmann::json record();
 
   const Scene& scene() const { return scene_; }
@@ -75,6 +99,8 @@ class LiveView {
   void startSession();
   const ImageF& groundTruth();
   void rebuildImage();
+  void restartTemporal();
+  void addToPlayback();
 
   Scene& scene_;
   RenderSettings settings_;
@@ -94,6 +120,11 @@ class LiveView {
   std::optional<ImageF> truth_;
   std::uint64_t truthGeneration_ = 0, generation_ = 1, frames_ = 0;
   std::deque<FrameSample> history_;
+
+  int animationFrame_ = 0;
+  bool playbackStale_ = true;  // the shown animation frame is not in playback_ yet
+  TemporalAccumulator temporal_;
+  PlaybackFigures playback_;
 };
 
 }  // namespace testbed::viewer

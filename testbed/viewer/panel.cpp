@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cstdio>
 #include <cstring>
 
@@ -88,7 +89,7 @@ Panel::Panel(std::string saveScenePath) {
   std::snprintf(savePath_, sizeof savePath_, "%s", saveScenePath.c_str());
 }
 
-PanelRequests Panel::draw(LiveView& view) {
+PanelRequests Panel::draw(LiveView& view, bool playing) {
   PanelRequests requests;
   ImGui::SetNextWindowPos(ImVec2(0, 0));
   ImGui::SetNextWindowSize(ImVec2(kPanelWidth, ImGui::GetIO().DisplaySize.y));
@@ -98,6 +99,7 @@ PanelRequests Panel::draw(LiveView& view) {
   ImGui::TextWrapped("%s, %dx%d, %s", view.scene().name.c_str(), view.settings().size.x, view.settings().size.y,
                      view.backend().c_str());
   if (!status_.empty()) ImGui::TextWrapped("%s", status_.c_str());
+  if (view.animated()) playbackSection(view, playing, requests);
   techniqueSection(view);
   displaySection(view);
   timingSection(view);
@@ -106,6 +108,35 @@ PanelRequests Panel::draw(LiveView& view) {
   ImGui::PopItemWidth();
   ImGui::End();
   return requests;
+}
+
+void Panel::playbackSection(const LiveView& view, bool playing, PanelRequests& requests) {
+  if (!ImGui::CollapsingHeader("Animation", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const int frame = view.animationFrame(), last = view.animationFrames() - 1;
+  if (ImGui::Button("<")) requests.showFrame = frame - 1;
+  ImGui::SameLine();
+  if (ImGui::Button(playing ? "pause" : "play")) requests.togglePlay = true;
+  ImGui::SameLine();
+  if (ImGui::Button(">")) requests.showFrame = frame + 1;
+  ImGui::SameLine();
+  ImGui::Text("%d fps", view.scene().animation->fps);
+  int scrubbed = frame;
+  if (ImGui::SliderInt("frame", &scrubbed, 0, last, "%d", ImGuiSliderFlags_AlwaysClamp) && scrubbed != frame)
+    requests.showFrame = scrubbed;
+
+  const PlaybackFigures& p = view.playback();
+  if (p.error)
+    ImGui::Text("frame %d: mismatch %.3f %%   rmse %.4f", frame, p.error->mismatchPct, p.error->rmse);
+  if (!p.note.empty()) ImGui::TextWrapped("%s", p.note.c_str());
+  const TemporalMetrics& t = p.temporal;
+  ImGui::Text("frames %d..%d: flicker %.5f", p.firstFrame, frame, t.flicker);
+  ImGui::Text("crawl %.3f %%   missed %.3f %%", t.crawlPct, t.crawlMissedPct);
+  ImGui::TextDisabled("%zu stable pixel pairs over %d frame pairs", t.stablePairs, t.framePairs);
+  std::vector<float> flicker;
+  for (const auto& pair : t.series) flicker.push_back(float(pair.flicker));
+  if (!flicker.empty())
+    ImGui::PlotLines("flicker", flicker.data(), int(flicker.size()), 0, nullptr, 0.0f, FLT_MAX, ImVec2(0, 36));
+  ImGui::TextDisabled("space: play/pause  left/right: step");
 }
 
 void Panel::techniqueSection(LiveView& view) {

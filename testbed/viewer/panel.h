@@ -15,6 +15,8 @@ inline constexpr float kPanelWidth = 380;  // window pixels; the 3D view lies ri
 
 // What the panel asks of the viewer loop this frame.
 struct PanelRequests {
+  bool togglePlay = false;
+  std::optional<int> showFrame;          // an animation frame: a step button or the slider
   bool screenshot = false;
   bool resetView = false;
   std::optional<std::string> saveScene;  // the path typed in the panel
@@ -23,12 +25,14 @@ struct PanelRequests {
 class Panel {
  public:
   explicit Panel(std::string saveScenePath);
-  // Draws the panel (between ImGui::NewFrame and ImGui::Render) and applies its edits to `view`.
-  PanelRequests draw(LiveView& view);
+  // Draws the panel (between ImGui::NewFrame and ImGui::Render) and applies its edits to
+  // `view`; `playing`: whether an animated scene is playing (the play button's label).
+  PanelRequests draw(LiveView& view, bool playing);
   // A line shown at the panel's top (last screenshot written, an error, ...).
   void setStatus(std::string status) { status_ = std::move(status); }
 
  private:
+  void playbackSection(const LiveView& view, bool playing, PanelRequests& requests);
   void techniqueSection(LiveView& view);
   void displaySection(LiveView& view);
   void timingSection(const LiveView& view);

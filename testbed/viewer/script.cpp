@@ -29,6 +29,8 @@ constexpr Verb kVerbs[] = {
     {"depth-format", ActionKind::DepthFormat, 1, 1}, {"frames", ActionKind::Frames, 1, 1},
     {"screenshot", ActionKind::Screenshot, 1, 1}, {"window-screenshot", ActionKind::WindowScreenshot, 1, 1},
     {"save-scene", ActionKind::SaveScene, 1, 1},  {"metrics", ActionKind::Metrics, 1, 1},
+    {"play", ActionKind::Play, 0, 0},             {"pause", ActionKind::Pause, 0, 0},
+    {"step", ActionKind::Step, 0, 1},             {"seek", ActionKind::Seek, 1, 1},
     {"quit", ActionKind::Quit, 0, 0},
 };
 
@@ -59,10 +61,15 @@ int integer(const std::string& word, int lo, int hi, const std::string& what) {
 // checked exactly as `--set` would be for the technique current at that line.
 class Checker {
  public:
-  explicit Checker(std::string technique) : technique_(std::move(technique)) {}
+  Checker(std::string technique, int animationFrames)
+      : technique_(std::move(technique)), animationFrames_(animationFrames) {}
 
   void check(ScriptAction& a, const std::vector<std::string>& args) {
     const std::string& what = args.empty() ? std::string() : args[0];
+    const bool playback = a.kind == ActionKind::Play || a.kind == ActionKind::Pause || a.kind == ActionKind::Step ||
+                          a.kind == ActionKind::Seek;
+    if (playback && animationFrames_ < 1)
+      throw InputError("the scene has no animation block, so there is nothing to play, step or seek");
     switch (a.kind) {
       case ActionKind::Technique:
         technique_ = findTechnique(what).info->id;
@@ -103,13 +110,21 @@ class Checker {
           throw InputError(std::string(a.kind == ActionKind::Metrics ? "metrics" : "save-scene") +
                            ": the file must end in .json, got '" + what + "'");
         break;
+      case ActionKind::Play:
+      case ActionKind::Pause:
       case ActionKind::Quit: break;
+      case ActionKind::Step:
+        a.count = args.empty() ? 1 : integer(what, -kMaxFrames, kMaxFrames, "step");
+        if (a.count == 0) throw InputError("step: expected a non-zero number of frames, got 0");
+        break;
+      case ActionKind::Seek: a.count = integer(what, 0, animationFrames_ - 1, "seek"); break;
     }
     a.text = what;
   }
 
  private:
   std::string technique_;
+  int animationFrames_ = 0;
   std::map<std::string, std::string> assignments_;
 };
 
@@ -121,9 +136,10 @@ void checkImagePath(const std::filesystem::path& path, bool floatAllowed, const 
   throw InputError(what + ": " + path.string() + ": the file must end in .png" + (floatAllowed ? " or .exr" : ""));
 }
 
-std::vector<ScriptAction> parseScript(const std::string& text, const std::string& name, std::string technique) {
+std::vector<ScriptAction> parseScript(const std::string& text, const std::string& name, std::string technique,
+                                      int animationFrames) {
   std::vector<ScriptAction> actions;
-  Checker checker(std::move(technique));
+  Checker checker(std::move(technique), animationFrames);
   std::istringstream lines(text);
   int number = 0;
   for (std::string line; std::getline(lines, line);) {
@@ -158,9 +174,10 @@ std::vector<ScriptAction> parseScript(const std::string& text, const std::string
   return actions;
 }
 
-std::vector<ScriptAction> readScript(const std::filesystem::path& file, const std::string& technique) {
+std::vector<ScriptAction> readScript(const std::filesystem::path& file, const std::string& technique,
+                                     int animationFrames) {
   try {
-    return parseScript(readInputFile(file, kMaxScriptBytes), file.string(), technique);
+    return parseScript(readInputFile(file, kMaxScriptBytes), file.string(), technique, animationFrames);
   } catch (const InputError& error) {
     throw InputError(std::string("--script ") + error.what());
   }

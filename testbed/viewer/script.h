@@ -24,6 +24,10 @@ enum class ActionKind {
   WindowScreenshot,  // window-screenshot PATH  the whole window, panel included (.png)
   SaveScene,         // save-scene PATH         the scene file with the current camera and light
   Metrics,           // metrics PATH            error metrics of the current frame (JSON)
+  Play,              // play                    an animated scene: one animation frame per displayed frame
+  Pause,             // pause
+  Step,              // step [N]                N animation frames on (negative: back), default 1
+  Seek,              // seek K                  show animation frame K
   Quit,              // quit
 };
 
@@ -33,18 +37,22 @@ struct ScriptAction {
   std::string text;            // id, NAME=VALUE, mode, depth format or path
   std::string detail;          // mode debug: the debug image's name (empty: the first)
   float numbers[2] = {0, 0};   // orbit, pan, light: two; zoom: one
-  int count = 0;               // shadow-map, frames
+  int count = 0;               // shadow-map, frames, step, seek
 };
 
 // `technique` is the viewer's technique when the script starts: `set` lines are checked
-// against whichever technique is current at that line, plugins included.
+// against whichever technique is current at that line, plugins included. `animationFrames`
+// is the scene's number of animation frames (0: no animation, where play, pause, step and
+// seek are refused); seek's frame must lie in [0, animationFrames - 1].
 // Read through input_file.h: a regular file of at most kMaxScriptBytes (a FIFO or
 // /dev/zero is refused at once, not read without end).
 inline constexpr std::uint64_t kMaxScriptBytes = 1ull << 20;
-std::vector<ScriptAction> readScript(const std::filesystem::path& file, const std::string& technique);
+std::vector<ScriptAction> readScript(const std::filesystem::path& file, const std::string& technique,
+                                     int animationFrames = 0);
 
 // The same from text (for tests); `name` is used in messages.
-std::vector<ScriptAction> parseScript(const std::string& text, const std::string& name, std::string technique);
+std::vector<ScriptAction> parseScript(const std::string& text, const std::string& name, std::string technique,
+                                      int animationFrames = 0);
 
 // Image outputs (--screenshot, screenshot lines) must end in .png or .exr, the window's in
 // .png; throws InputError("<what>: ...") otherwise.

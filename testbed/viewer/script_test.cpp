@@ -46,9 +46,9 @@ quit
   EXPECT_EQ(actions.back().kind, ActionKind::Quit);
 }
 
-std::string errorOf(const std::string& text, const std::string& technique = "sm") {
+std::string errorOf(const std::string& text, const std::string& technique = "sm", int animationFrames = 0) {
   try {
-    parseScript(text, "s.txt", technique);
+    parseScript(text, "s.txt", technique, animationFrames);
   } catch (const InputError& error) {
     return error.what();
   }
@@ -58,7 +58,7 @@ std::string errorOf(const std::string& text, const std::string& technique = "sm"
 TEST(ViewerScript, BadLinesNameTheFileAndLine) {
   EXPECT_EQ(errorOf("orbit 1 2\nspin 3\n"),
             "s.txt:2: unknown action 'spin' (actions: technique, set, orbit, pan, zoom, light, mode, shadow-map, "
-            "depth-format, frames, screenshot, window-screenshot, save-scene, metrics, quit)");
+            "depth-format, frames, screenshot, window-screenshot, save-scene, metrics, play, pause, step, seek, quit)");
   EXPECT_EQ(errorOf("orbit 1\n"), "s.txt:1: orbit: expected 2 argument(s), got 1");
   EXPECT_EQ(errorOf("orbit 1 nan\n"), "s.txt:1: expected two numbers: expected a finite number, got 'nan'");
   EXPECT_EQ(errorOf("zoom -2\n"), "s.txt:1: zoom: the factor must be > 0, got '-2'");
@@ -81,6 +81,26 @@ TEST(ViewerScript, SetFollowsTheCurrentTechnique) {
   EXPECT_EQ(errorOf("technique pcf\nset kernel=4\n"), "s.txt:2: --set kernel=4: must be odd");
   EXPECT_EQ(errorOf("set kernel=5\n", "pcf"), "(accepted)");
   EXPECT_EQ(errorOf("technique pcf\ntechnique sm\nset kernel=5\n").substr(0, 8), "s.txt:3:");
+}
+
+TEST(ViewerScript, PlaybackActionsOnAnAnimatedScene) {
+  const auto actions = parseScript("play\npause\nstep\nstep -3\nseek 47\n", "p.txt", "sm", 48);
+  ASSERT_EQ(actions.size(), 5u);
+  EXPECT_EQ(actions[0].kind, ActionKind::Play);
+  EXPECT_EQ(actions[1].kind, ActionKind::Pause);
+  EXPECT_EQ(actions[2].kind, ActionKind::Step);
+  EXPECT_EQ(actions[2].count, 1);
+  EXPECT_EQ(actions[3].count, -3);
+  EXPECT_EQ(actions[4].kind, ActionKind::Seek);
+  EXPECT_EQ(actions[4].count, 47);
+}
+
+TEST(ViewerScript, PlaybackActionsAreRefusedOutsideTheAnimation) {
+  EXPECT_EQ(errorOf("seek 48\n", "sm", 48), "s.txt:1: seek: expected an integer in 0..47, got '48'");
+  EXPECT_EQ(errorOf("step 0\n", "sm", 48), "s.txt:1: step: expected a non-zero number of frames, got 0");
+  EXPECT_EQ(errorOf("step 1 2\n", "sm", 48), "s.txt:1: step: expected 0-1 argument(s), got 2");
+  EXPECT_EQ(errorOf("orbit 1 2\nplay\n"),
+            "s.txt:2: the scene has no animation block, so there is nothing to play, step or seek");
 }
 
 TEST(ViewerScript, MissingFileIsAnInputError) {

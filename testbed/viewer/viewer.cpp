@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "testbed/core/error.h"
+#include "testbed/scene/animation.h"
 #include "testbed/viewer/input.h"
 #include "testbed/viewer/live_view.h"
 #include "testbed/viewer/navigation.h"
@@ -70,8 +71,7 @@ class Viewer {
 
   int run() {
     ImGuiSession imgui(window_);
-    const bool scripted = !options_.script.empty() || options_.frames;
-    glfwSwapInterval(scripted ? 0 : 1);
+    glfwSwapInterval(scripted_ ? 0 : 1);
     // A key pressed and released between two (slow, llvmpipe) frames still counts once.
     glfwSetInputMode(window_, GLFW_STICKY_KEYS, GLFW_TRUE);
     live_.renderFrame();
@@ -92,14 +92,20 @@ class Viewer {
     const Rect viewArea{{panel, 0}, glm::max(framebuffer - glm::ivec2(panel, 0), glm::ivec2(1))};
     const Rect imageRect = placeImage(options_.settings.size, viewArea);
 
+    if (playing_) advancePlayback();
     handle(input_.poll(window_, imageRect, options_.scene.camera, options_.scene.light, flySpeed_));
-    handle(panel_.draw(live_));
+    handle(panel_.draw(live_, playing_));
     bool windowShot = false;
     if (next_ < options_.script.size()) windowShot = scriptStep();
 
     live_.renderFrame();
     display_.upload(live_.image());
     display_.draw(framebuffer, imageRect);
+    // ImGui's backend puts back the program current before it drew. That may be one of a
+    // session destroyed this frame (the ground truth's, rendered again whenever the view
+    // changes): still current, it outlived its deletion only until ImGui replaced it, and
+    // putting it back would be GL_INVALID_VALUE. None current, there is nothing to put back.
+    glUseProgram(0);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     if (windowShot) saveWindow(options_.script[next_ - 1].text, framebuffer);
@@ -118,11 +124,39 @@ class Viewer {
     if (in.screenshot) saveView(nextScreenshotName());
     if (in.resetView) resetView();
     if (in.quit) stop_ = true;
+    if (in.togglePlay) togglePlay();
+    if (in.step != 0) stepTo(live_.animationFrame() + in.step);
+  }
+
+  // Playing shows every frame once, in order (so the running flicker covers each pair),
+  // and at most at the scene's fps; a script plays one frame per displayed frame. It
+  // stops at the last frame.
+  void advancePlayback() {
+    const double now = glfwGetTime();
+    if (!scripted_ && now - lastAdvance_ < 1.0 / live_.scene().animation->fps) return;
+    lastAdvance_ = now;
+    live_.showFrame(live_.animationFrame() + 1);
+    if (live_.animationFrame() >= live_.animationFrames() - 1) playing_ = false;
+  }
+
+  void togglePlay() {
+    if (!live_.animated()) return;
+    playing_ = !playing_;
+    if (playing_ && live_.animationFrame() >= live_.animationFrames() - 1) live_.showFrame(0);  // from the start again
+    lastAdvance_ = glfwGetTime();
+  }
+
+  // Step and scrub pause the playback.
+  void stepTo(int frame) {
+    playing_ = false;
+    live_.showFrame(frame);
   }
 
   void handle(const PanelRequests& requests) {
     if (requests.screenshot) saveView(nextScreenshotName());
     if (requests.resetView) resetView();
+    if (requests.togglePlay) togglePlay();
+    if (requests.showFrame) stepTo(*requests.showFrame);
     if (requests.saveScene) {
       try {
         saveSceneWithView(options_.scene, *requests.saveScene);
@@ -169,6 +203,12 @@ class Viewer {
       case ActionKind::Metrics:
         writeOutput(a.text, [&](OutputFiles& f, const std::string& n) { f.writeText(n, live_.record().dump(2) + "\n"); });
         break;
+      case ActionKind::Play:
+        if (!playing_) togglePlay();
+        break;
+      case ActionKind::Pause: playing_ = false; break;
+      case ActionKind::Step: stepTo(live_.animationFrame() + a.count); break;
+      case ActionKind::Seek: stepTo(a.count); break;
       case ActionKind::Quit: stop_ = true; break;
     }
     return false;
@@ -180,9 +220,11 @@ class Viewer {
     return assignments(info.parameters, live_.parameters().values());
   }
 
+  // To the file's camera and light, or on an animated scene to the shown frame's.
   void resetView() {
-    options_.scene.camera = initialCamera_;
-    options_.scene.light = initialLight_;
+    Scene& scene = options_.scene;
+    scene.camera = scene.animation ? cameraAt(*scene.animation, live_.animationFrame()) : initialCamera_;
+    scene.light = scene.animation ? lightAt(*scene.animation, live_.animationFrame()) : initialLight_;
     live_.cameraMoved();
     live_.lightMoved();
   }
@@ -218,6 +260,9 @@ class Viewer {
   Input input_;
   Display display_;
   float flySpeed_;
+  const bool scripted_ = !options_.script.empty() || options_.frames.has_value();
+  bool playing_ = false;
+  double lastAdvance_ = 0;
   std::size_t next_ = 0;
   int waitFrames_ = 0, framesAfterScript_ = 0;
   bool stop_ = false;
