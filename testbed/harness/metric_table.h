@@ -33,6 +33,11 @@ enum MetricUse : unsigned {
   kSweepMeasure = 8,   // a spec's "measure" (docs/paper-runs.md "Spec")
 };
 
+// What an error metric was measured against (docs/ground-truth-and-metrics.md): the
+// point-light ground truth, the area-light reference, or neither (times, memory, work).
+enum class MetricReference { None, Hard, Soft };
+std::string_view referenceName(MetricReference reference);  // "", "hard", "soft"
+
 struct Metric {
   std::string_view name;     // as check's findings, the benchmarks and the README name it
   std::string_view path;     // JSON pointer into a record; empty for a derived figure
@@ -51,6 +56,7 @@ struct Metric {
   std::optional<double> (*value)(const Record& record, const Record* sm);
   // Stores a value read from the JSON path (stored figures only).
   void (*store)(Record& record, double value);
+  MetricReference reference = MetricReference::None;
 
   bool shownIn(MetricUse use) const { return (uses & use) != 0; }
   // The unit alone, as a sweep table's header names it: "ms", "fps", "MB".

@@ -199,6 +199,8 @@ Record read(const Reader& r) {
   if (r.has("memory")) out.memory = readMemory(r["memory"]);
   for (const Metric& m : metricTable()) {
     if (m.path.empty() || (inErrorBlock(m) && error.value.is_null())) continue;
+    // Records written before a soft metric existed lack its key: absent, like null.
+    if (m.reference == MetricReference::Soft && !r.value.contains(json::json_pointer(std::string(m.path)))) continue;
     const Reader value = follow(r, m.path);
     if (m.nullable && value.value.is_null()) continue;
     m.store(out, m.integer ? double(value.count()) : value.magnitude());
@@ -306,6 +308,8 @@ void to_json(json& out, const Record& r) {
     const std::optional<double> v = m.value(r, nullptr);
     out[json::json_pointer(std::string(m.path))] =
         !v ? json(nullptr) : m.integer ? json(std::uint64_t(*v)) : json(*v);
+    // Which reference each measured error is against (metric_table.h MetricReference).
+    if (v && m.reference != MetricReference::None) out["error"]["reference"][std::string(m.name)] = referenceName(m.reference);
   }
 }
 
