@@ -70,6 +70,13 @@ LightDesc spotWithRange(glm::vec3 eye, glm::vec3 target, float fov, float nearPl
   return given(light);
 }
 
+void addObject(Scene& scene, std::string label, TriMesh mesh) {
+  SceneObject object;
+  object.label = std::move(label);
+  object.mesh = std::move(mesh);
+  scene.objects.push_back(std::move(object));
+}
+
 // An 80×80 floor at y = 0 seen obliquely from above.
 Scene floorScene(const std::string& name, const LightDesc& light) {
   Scene scene;
@@ -77,7 +84,7 @@ Scene floorScene(const std::string& name, const LightDesc& light) {
   scene.camera.eye = {28, 34, -30};
   scene.camera.target = {0, 0, 0};
   scene.light = light;
-  scene.objects.push_back({"plane", makePlane(80, 80)});
+  addObject(scene, "plane", makePlane(80, 80));
   return scene;
 }
 
@@ -219,7 +226,7 @@ Scene conformanceBoxScene(bool spot) {
   TriMesh box = makeBox(10, 2, 10);
   for (auto v : box.vertices()) box.point(v) += OpenMesh::Vec3f(0, 11, 0);
   box.update_normals();
-  scene.objects.push_back({"box", box});
+  addObject(scene, "box", std::move(box));
   return scene;
 }
 
@@ -371,7 +378,7 @@ ConformanceCheck checkBadValuesRefused(const RegisteredTechnique& technique) {
   int refused = 0;
   auto refuses = [&](const std::string& parameter, const std::string& value) {
     try {
-      resolveParameters(id, technique.info->parameters, {{parameter, value}});
+      (void)resolveParameters(id, technique.info->parameters, {{parameter, value}});
     } catch (const InputError&) {
       ++refused;
       return true;

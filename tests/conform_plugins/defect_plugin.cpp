@@ -4,6 +4,7 @@
 // chosen by the DEFECT_* definition it is compiled with (CMakeLists.txt here).
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "testbed/gl/objects.h"
