@@ -21,10 +21,15 @@ constexpr int kScreenFilterPx = 16;
 
 bool isReceiver(const ImageF& positions, std::size_t i) { return positions.pixels[4 * i + 3] >= 0.5f; }
 
-std::string pixelText(const ImageF& image, std::size_t i) {
+std::string valueText(float value) {
   std::ostringstream text;
-  text << "pixel (" << i % std::size_t(image.width) << ", " << i / std::size_t(image.width) << ") = " << image.pixels[i];
+  text << value;
   return text.str();
+}
+
+std::string pixelText(const ImageF& image, std::size_t i) {
+  return "pixel (" + std::to_string(i % std::size_t(image.width)) + ", " + std::to_string(i / std::size_t(image.width)) +
+         ") = " + valueText(image.pixels[i]);
 }
 
 ConformanceCheck pass(std::string name, std::string detail) { return {std::move(name), true, std::move(detail)}; }
@@ -329,7 +334,7 @@ ConformanceCheck checkDeterminism(const RegisteredTechnique& technique, const Pa
       if (!sameBits(first.pixels[i], second.pixels[i]) && differing++ == 0) example = i;
     if (differing > 0)
       return fail(name, std::to_string(differing) + " pixels differ between two runs, first " +
-                            pixelText(first, example) + " then " + std::to_string(second.pixels[example]));
+                            pixelText(first, example) + " then " + valueText(second.pixels[example]));
     return pass(name, "two runs, each a fresh instance, give bit-identical visibility");
   });
 }

@@ -28,8 +28,7 @@ class DefectTechnique final : public WithParameters<DefectParameters> {
       sm_->configure(resolveParameters("sm", findTechnique("sm").info->parameters, {}));
 #if defined(DEFECT_HIDDEN_MEMORY)
       // A texture booked in a private ledger: the technique's own ledger never sees it.
-      GpuMemoryLedger hidden;
-      GpuMemoryLedger::Scope scope(hidden);
+      GpuMemoryLedger::Scope scope(hiddenLedger_);
       hiddenTexture_ = Texture::create2D(GL_R32F, 256, 256);
 #endif
     }
@@ -54,6 +53,7 @@ class DefectTechnique final : public WithParameters<DefectParameters> {
 
  private:
   std::unique_ptr<ShadowTechnique> sm_;
+  GpuMemoryLedger hiddenLedger_;  // outlives the texture booked in it
   Texture hiddenTexture_;
 };
 
