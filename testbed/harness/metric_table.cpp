@@ -131,13 +131,13 @@ const std::vector<Metric> kTable = {
      storeSoft<&ErrorMetrics::softRmse>, MetricReference::Soft},
     // Penumbra metrics against the area-light reference (kPenumbraEpsilon, metrics.h).
     {"soft_penumbra_mae", "/error/soft_penumbra_mae", "soft MAE penumbra", "penumbra MAE", "", 4, CheckRule::Error, 0.001,
-     Better::Lower, kReportColumn | kBrief, false, true, softValue<&ErrorMetrics::softPenumbraMae>,
+     Better::Lower, kReportColumn | kBrief, false, false, softValue<&ErrorMetrics::softPenumbraMae>,
      storeSoft<&ErrorMetrics::softPenumbraMae>, MetricReference::Soft},
     {"soft_outside_mae", "/error/soft_outside_mae", "soft MAE outside penumbra", "", "", 4, CheckRule::Error, 0.001,
-     Better::Lower, kReportColumn, false, true, softValue<&ErrorMetrics::softOutsideMae>,
+     Better::Lower, kReportColumn, false, false, softValue<&ErrorMetrics::softOutsideMae>,
      storeSoft<&ErrorMetrics::softOutsideMae>, MetricReference::Soft},
     {"soft_umbra_leak", "/error/soft_umbra_leak", "soft umbra leak", "", "", 4, CheckRule::Error, 0.001, Better::Lower,
-     kReportColumn, false, true, softValue<&ErrorMetrics::softUmbraLeak>, storeSoft<&ErrorMetrics::softUmbraLeak>,
+     kReportColumn, false, false, softValue<&ErrorMetrics::softUmbraLeak>, storeSoft<&ErrorMetrics::softUmbraLeak>,
      MetricReference::Soft},
 };
 

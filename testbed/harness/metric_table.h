@@ -50,7 +50,9 @@ struct Metric {
   Better better;
   unsigned uses;  // MetricUse flags
   bool integer;   // stored as a JSON integer (memory_bytes)
-  bool nullable;  // stored as null where absent (soft_rmse without an area reference)
+  // Stored as null where absent (soft_rmse without an area reference); a metric that is
+  // not nullable and has no value has no key (the penumbra metrics without a reference).
+  bool nullable;
   // The value in `record`; nullopt where it has none (no error block, no soft_rmse, a ratio
   // without `sm` or with sm's time 0). `sm` is the baseline of ratios, may be null.
   std::optional<double> (*value)(const Record& record, const Record* sm);
