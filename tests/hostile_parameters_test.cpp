@@ -11,27 +11,12 @@
 
 #include <gtest/gtest.h>
 
+#include "testbed/harness/conformance.h"
 #include "testbed/harness/frame_runner.h"
 #include "tests/gl_fixture.h"
 
 namespace testbed {
 namespace {
-
-// Each limit of `spec` as --set would write it; odd-only integers at their odd limits.
-std::vector<std::string> limitsOf(const ParameterSpec& spec) {
-  switch (spec.type) {
-    case ParameterType::Bool: return {"true", "false"};
-    case ParameterType::Choice: return spec.choices;
-    case ParameterType::Int: {
-      auto lo = std::int64_t(spec.min), hi = std::int64_t(spec.max);
-      if (spec.oddOnly && lo % 2 == 0) ++lo;
-      if (spec.oddOnly && hi % 2 == 0) --hi;
-      return {std::to_string(lo), std::to_string(hi)};
-    }
-    case ParameterType::Float: return {formatValue(spec.min), formatValue(spec.max)};
-  }
-  return {};
-}
 
 // Receivers are the pixels the G-buffer covers; everything else is NaN by design.
 int badReceiverPixels(const ImageF& visibility, const FrameRunner& runner, std::string& example) {
@@ -54,7 +39,7 @@ void scanScene(const Scene& scene) {
   for (const auto& technique : registeredTechniques()) {
     const std::string& id = technique.info->id;
     for (const auto& spec : technique.info->parameters)
-      for (const auto& value : limitsOf(spec)) {
+      for (const auto& value : parameterLimits(spec)) {
         SCOPED_TRACE(scene.name + ": " + id + " --set " + spec.name + "=" + value);
         const TechniqueRun run = test::runTechnique(runner, id, {{spec.name, value}});
         std::string example;

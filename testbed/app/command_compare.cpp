@@ -83,6 +83,7 @@ CommandRunner addCompareCommand(CLI::App& app) {
     std::string scene, techniques = "all";
     std::vector<std::string> assignments;
     int areaSamples = 0;
+    std::string reference = "hard";
     std::string frames;
     bool noPlot = false;
   };
@@ -92,7 +93,13 @@ CommandRunner addCompareCommand(CLI::App& app) {
   command->add_option("--techniques", options->techniques, "all, or a comma-separated list")->capture_default_str();
   addSetOption(*command, options->assignments, "technique.parameter=value (repeatable)");
   command->add_option("--area-samples", options->areaSamples,
-                      "also render the area-light reference with N samples (gives soft_rmse)");
+                      "also render the area-light reference with N samples (gives the soft metrics; 64 with "
+                      "--reference soft or both)");
+  command->add_option("--reference", options->reference,
+                      "what grid.png's error maps and close-ups compare against: hard (the shadow volumes), soft (the "
+                      "area-light reference), or both (grid.png and grid_soft.png)")
+      ->check(CLI::IsMember({"hard", "soft", "both"}))
+      ->capture_default_str();
   addFramesOption(*command, options->frames);
   command->add_flag("--no-plot", options->noPlot, "with --frames: skip the error-over-time plots");
   options->common.addTo(*command);
@@ -110,7 +117,13 @@ CommandRunner addCompareCommand(CLI::App& app) {
     }
     if (options->areaSamples < 0 || options->areaSamples > 4096)
       throw InputError("--area-samples: " + std::to_string(options->areaSamples) + " is outside 0..4096");
+    const bool softMaps = options->reference != "hard", hardMaps = options->reference != "soft";
+    const int areaSamples = softMaps && options->areaSamples == 0 ? 64 : options->areaSamples;
     Scene scene = loadScene(options->scene);
+    if (softMaps && !options->frames.empty()) throw InputError("--reference " + options->reference + ": not available with --frames");
+    if (softMaps && !(scene.light.radius > 0))
+      throw InputError(options->scene + ": light.radius: 0, so the area-light reference of --reference " +
+                       options->reference + " would be the hard one; give the light a radius");
     if (!options->frames.empty()) {
       if (options->areaSamples > 0) throw InputError("--area-samples: not available with --frames");
       SequenceJob job{parseFrameRange(options->frames, scene), true, {}, !options->noPlot};
@@ -135,11 +148,12 @@ CommandRunner addCompareCommand(CLI::App& app) {
     for (const auto& id : ids)
       for (const char* extension : {".png", ".exr", ".json"}) files.claim(id + extension);
     for (const char* name : {"metrics.json", "report.md", "grid.png", "speed_vs_error.svg", "index.html"}) files.claim(name);
+    if (hardMaps && softMaps) files.claim("grid_soft.png");
     auto context = createContext(options->common.backend);
     validateSettings(settings);
     const std::string backend = context->description();
     FrameRunner runner(scene, settings);
-    const std::size_t steps = techniques.size() + 1 + (options->areaSamples > 0);
+    const std::size_t steps = techniques.size() + 1 + (areaSamples > 0);
     std::size_t step = 0;
     auto progress = [&](const std::string& what) {
       beginProgressLine("[" + std::to_string(++step) + "/" + std::to_string(steps) + "] " + what + " on " + scene.name);
@@ -164,11 +178,11 @@ CommandRunner addCompareCommand(CLI::App& app) {
     endProgressLine(": " + briefSummary(comparison.groundTruth, nullptr, ", "));
 
     std::optional<TechniqueRun> area;
-    if (options->areaSamples > 0) {
-      progress("area-light reference (" + std::to_string(options->areaSamples) + " samples)");
+    if (areaSamples > 0) {
+      progress("area-light reference (" + std::to_string(areaSamples) + " samples)");
       const auto& reference = areaLightReference();
       area = runner.run(reference, resolveParameters("area", reference.info->parameters,
-                                                     {{"area_samples", std::to_string(options->areaSamples)}}));
+                                                     {{"area_samples", std::to_string(areaSamples)}}));
       const Record record = makeRecord(*area, runner, backend);
       writeOutputs("area", *area, record);
       all.push_back(record);
@@ -191,11 +205,20 @@ CommandRunner addCompareCommand(CLI::App& app) {
     }
     files.writeText("metrics.json", all.dump(2) + "\n");
     files.writeText("report.md", reportMarkdown(comparison));
-    files.writeImage("grid.png", comparisonGrid(comparison));
+    if (softMaps) {
+      // The soft grid: the same rows, their error maps and close-ups against the area light.
+      Comparison soft = comparison;
+      soft.softReference = true;
+      soft.groundTruthVisibility = area->visibility;
+      for (auto& entry : soft.entries) entry.heatMap = softErrorHeatMap(entry.visibility, area->visibility);
+      files.writeImage(hardMaps ? "grid_soft.png" : "grid.png", comparisonGrid(soft));
+    }
+    if (hardMaps) files.writeImage("grid.png", comparisonGrid(comparison));
     files.writeText("speed_vs_error.svg", speedVsErrorSvg(comparison));
     files.writeText("index.html", compareHtml(comparison));
     files.commit();
-    std::cerr << "testbed: wrote index.html, report.md, grid.png, speed_vs_error.svg, metrics.json to "
+    std::cerr << "testbed: wrote index.html, report.md, grid.png" << (hardMaps && softMaps ? ", grid_soft.png" : "")
+              << ", speed_vs_error.svg, metrics.json to "
               << oneLine(options->common.out) << "\n";
     return 0;
   }};

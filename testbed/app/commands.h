@@ -65,6 +65,8 @@ CommandRunner addCheckCommand(CLI::App& app);
 // `sweep` and `merge`: paper-style tables from a spec, optionally in shards (docs/paper-runs.md "Paper runs").
 CommandRunner addSweepCommand(CLI::App& app);
 CommandRunner addMergeCommand(CLI::App& app);
+// `conform`: the conformance suite on one technique (docs/conformance.md).
+CommandRunner addConformCommand(CLI::App& app);
 // `corpus`: generated scene files and their manifest (docs/corpus.md).
 CommandRunner addCorpusCommand(CLI::App& app);
 

@@ -19,7 +19,8 @@ int main(int argc, char** argv) {
                                                   testbed::addCheckCommand(app),
                                                   testbed::addSweepCommand(app),
                                                   testbed::addMergeCommand(app),
-                                                  testbed::addCorpusCommand(app)};
+                                                  testbed::addCorpusCommand(app),
+                                                  testbed::addConformCommand(app)};
 #ifdef TESTBED_WITH_VIEWER
   commands.push_back(testbed::addViewCommand(app));
 #endif

@@ -30,6 +30,17 @@ void storeError(Record& r, double value) {
   (*r.error).*Member = value;
 }
 
+// The soft metrics: absent (null) without an area-light reference.
+template <std::optional<double> ErrorMetrics::*Member>
+Value softValue(const Record& r, const Record*) {
+  return r.error ? (*r.error).*Member : std::nullopt;
+}
+template <std::optional<double> ErrorMetrics::*Member>
+void storeSoft(Record& r, double value) {
+  if (!r.error) r.error.emplace();
+  (*r.error).*Member = value;
+}
+
 constexpr unsigned kNone = 0;
 
 // A work counter's frame total (the sum over the passes); none where nothing was counted.
@@ -97,30 +108,37 @@ const std::vector<Metric> kTable = {
     // points, 0.001 RMSE, 0.01 px.
     {"mismatch_pct", "/error/mismatch_pct", "mismatch %", "mismatch", "%", 3, CheckRule::Error, 0.01, Better::Lower,
      kReportColumn | kBrief, false, false, errorValue<&ErrorMetrics::mismatchPct>,
-     storeError<&ErrorMetrics::mismatchPct>},
+     storeError<&ErrorMetrics::mismatchPct>, MetricReference::Hard},
     {"edge_mismatch_pct", "/error/edge_mismatch_pct", "edge mismatch %", "edge mismatch", "%", 2, CheckRule::Error, 0.01,
      Better::Lower, kReportColumn, false, false, errorValue<&ErrorMetrics::edgeMismatchPct>,
-     storeError<&ErrorMetrics::edgeMismatchPct>},
+     storeError<&ErrorMetrics::edgeMismatchPct>, MetricReference::Hard},
     {"rmse", "/error/rmse", "RMSE", "RMSE", "", 4, CheckRule::Error, 0.001, Better::Lower, kReportColumn, false, false,
-     errorValue<&ErrorMetrics::rmse>, storeError<&ErrorMetrics::rmse>},
+     errorValue<&ErrorMetrics::rmse>, storeError<&ErrorMetrics::rmse>, MetricReference::Hard},
     {"leak_pct", "/error/leak_pct", "leak %", "leak", "%", 3, CheckRule::Error, 0.01, Better::Lower,
-     kReportColumn | kBrief, false, false, errorValue<&ErrorMetrics::leakPct>, storeError<&ErrorMetrics::leakPct>},
+     kReportColumn | kBrief, false, false, errorValue<&ErrorMetrics::leakPct>, storeError<&ErrorMetrics::leakPct>, MetricReference::Hard},
     {"overestimation_pct", "/error/overestimation_pct", "overestimation %", "overestimation", "%", 3, CheckRule::Error,
      0.01, Better::Lower, kReportColumn, false, false, errorValue<&ErrorMetrics::overestimationPct>,
-     storeError<&ErrorMetrics::overestimationPct>},
+     storeError<&ErrorMetrics::overestimationPct>, MetricReference::Hard},
     {"boundary_px.mean", "/error/boundary_px/mean", "boundary px mean", "boundary", " px", 3, CheckRule::Error, 0.01,
      Better::Lower, kReportColumn | kBrief, false, false, errorValue<&ErrorMetrics::boundaryMean>,
-     storeError<&ErrorMetrics::boundaryMean>},
+     storeError<&ErrorMetrics::boundaryMean>, MetricReference::Hard},
     {"boundary_px.p95", "/error/boundary_px/p95", "boundary px p95", "boundary p95", " px", 3, CheckRule::None, 0,
      Better::Lower, kReportColumn, false, false, errorValue<&ErrorMetrics::boundaryP95>,
-     storeError<&ErrorMetrics::boundaryP95>},
+     storeError<&ErrorMetrics::boundaryP95>, MetricReference::Hard},
     {"soft_rmse", "/error/soft_rmse", "soft RMSE", "soft RMSE", "", 4, CheckRule::Error, 0.001, Better::Lower,
-     kReportColumn, false, true,
-     [](const Record& r, const Record*) -> Value { return r.error ? r.error->softRmse : std::nullopt; },
-     [](Record& r, double v) {
-       if (!r.error) r.error.emplace();
-       r.error->softRmse = v;
-     }},
+     kReportColumn | kBrief, false, true,
+     softValue<&ErrorMetrics::softRmse>,
+     storeSoft<&ErrorMetrics::softRmse>, MetricReference::Soft},
+    // Penumbra metrics against the area-light reference (kPenumbraEpsilon, metrics.h).
+    {"soft_penumbra_mae", "/error/soft_penumbra_mae", "soft MAE penumbra", "penumbra MAE", "", 4, CheckRule::Error, 0.001,
+     Better::Lower, kReportColumn | kBrief, false, false, softValue<&ErrorMetrics::softPenumbraMae>,
+     storeSoft<&ErrorMetrics::softPenumbraMae>, MetricReference::Soft},
+    {"soft_outside_mae", "/error/soft_outside_mae", "soft MAE outside penumbra", "", "", 4, CheckRule::Error, 0.001,
+     Better::Lower, kReportColumn, false, false, softValue<&ErrorMetrics::softOutsideMae>,
+     storeSoft<&ErrorMetrics::softOutsideMae>, MetricReference::Soft},
+    {"soft_umbra_leak", "/error/soft_umbra_leak", "soft umbra leak", "", "", 4, CheckRule::Error, 0.001, Better::Lower,
+     kReportColumn, false, false, softValue<&ErrorMetrics::softUmbraLeak>, storeSoft<&ErrorMetrics::softUmbraLeak>,
+     MetricReference::Soft},
 };
 
 }  // namespace
@@ -131,6 +149,15 @@ std::string_view Metric::unit() const {
 }
 
 std::span<const Metric> metricTable() { return kTable; }
+
+std::string_view referenceName(MetricReference reference) {
+  switch (reference) {
+    case MetricReference::Hard: return "hard";
+    case MetricReference::Soft: return "soft";
+    case MetricReference::None: break;
+  }
+  return "";
+}
 
 const Metric* findMetric(std::string_view name, MetricUse use) {
   for (const Metric& m : kTable)

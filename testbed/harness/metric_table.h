@@ -33,6 +33,11 @@ enum MetricUse : unsigned {
   kSweepMeasure = 8,   // a spec's "measure" (docs/paper-runs.md "Spec")
 };
 
+// What an error metric was measured against (docs/ground-truth-and-metrics.md): the
+// point-light ground truth, the area-light reference, or neither (times, memory, work).
+enum class MetricReference { None, Hard, Soft };
+std::string_view referenceName(MetricReference reference);  // "", "hard", "soft"
+
 struct Metric {
   std::string_view name;     // as check's findings, the benchmarks and the README name it
   std::string_view path;     // JSON pointer into a record; empty for a derived figure
@@ -45,12 +50,15 @@ struct Metric {
   Better better;
   unsigned uses;  // MetricUse flags
   bool integer;   // stored as a JSON integer (memory_bytes)
-  bool nullable;  // stored as null where absent (soft_rmse without an area reference)
+  // Stored as null where absent (soft_rmse without an area reference); a metric that is
+  // not nullable and has no value has no key (the penumbra metrics without a reference).
+  bool nullable;
   // The value in `record`; nullopt where it has none (no error block, no soft_rmse, a ratio
   // without `sm` or with sm's time 0). `sm` is the baseline of ratios, may be null.
   std::optional<double> (*value)(const Record& record, const Record* sm);
   // Stores a value read from the JSON path (stored figures only).
   void (*store)(Record& record, double value);
+  MetricReference reference = MetricReference::None;
 
   bool shownIn(MetricUse use) const { return (uses & use) != 0; }
   // The unit alone, as a sweep table's header names it: "ms", "fps", "MB".

@@ -37,6 +37,9 @@ TEST(MetricTable, StoredMetricsAreWhereTheirPathSays) {
   r.gpu.totalMs = 0.75;
   r.cpuMs = 20;
   r.error->softRmse = 0.0625;
+  r.error->softPenumbraMae = 0.125;
+  r.error->softOutsideMae = 0.03125;
+  r.error->softUmbraLeak = 0.5;
   r.error->boundaryP95 = 4;
   const nlohmann::json j = r;
   const Record back = j.get<Record>();
@@ -87,10 +90,26 @@ TEST(MetricTable, RatiosAreAgainstSmAndTheWholeFrame) {
   EXPECT_EQ(metric("memory_mb").unit(), "MB");
 }
 
+// Every error metric names the reference it is measured against, and only those do.
+TEST(MetricTable, ErrorMetricsNameTheirReference) {
+  for (const Metric& m : metricTable()) {
+    SCOPED_TRACE(std::string(m.name));
+    const bool error = m.path.starts_with("/error/"), soft = m.name.starts_with("soft_");
+    EXPECT_EQ(m.reference, !error ? MetricReference::None : soft ? MetricReference::Soft : MetricReference::Hard);
+  }
+  EXPECT_EQ(referenceName(metric("soft_umbra_leak").reference), "soft");
+  EXPECT_EQ(referenceName(metric("leak_pct").reference), "hard");
+}
+
 TEST(MetricTable, BriefSummaryNamesTheBriefMetrics) {
   const Record sm = timed("sm", 10, 10), smsr = timed("smsr", 15, 10);
   EXPECT_EQ(briefSummary(smsr, &sm, ", "), "15 ms, 1.5x sm, mismatch 0.125%, leak 0%, boundary 0 px");
   EXPECT_EQ(briefSummary(smsr, nullptr, ", "), "15 ms, mismatch 0.125%, leak 0%, boundary 0 px");
+  Record soft = smsr;  // with the area-light reference: its RMSE and penumbra error too
+  soft.error->softRmse = 0.25;
+  soft.error->softPenumbraMae = 0.125;
+  EXPECT_EQ(briefSummary(soft, nullptr, ", "),
+            "15 ms, mismatch 0.125%, leak 0%, boundary 0 px, soft RMSE 0.25, penumbra MAE 0.125");
   EXPECT_EQ(formatFixed(std::nullopt, 2), "–");
   EXPECT_EQ(formatFixed(2.0 / 3.0, 3), "0.667");
 }

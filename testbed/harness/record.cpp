@@ -237,6 +237,8 @@ Record read(const Reader& r) {
   if (r.has("memory")) out.memory = readMemory(r["memory"]);
   for (const Metric& m : metricTable()) {
     if (m.path.empty() || (inErrorBlock(m) && error.value.is_null())) continue;
+    // A soft metric without a reference has no key (soft_rmse: null).
+    if (m.reference == MetricReference::Soft && !r.value.contains(json::json_pointer(std::string(m.path)))) continue;
     const Reader value = follow(r, m.path);
     if (m.nullable && value.value.is_null()) continue;
     m.store(out, m.integer ? double(value.count()) : value.magnitude());
@@ -340,13 +342,22 @@ void to_json(json& out, const Record& r) {
   if (r.path) out["path"] = std::string(pathName(*r.path));
   if (r.memory) out["memory"] = memoryJson(*r.memory);
   if (r.workRecorded) out["work"] = workJson(r.work);
+  bool soft = false;  // measured against the area-light reference too
   for (const Metric& m : metricTable()) {
     if (m.path.empty() || (inErrorBlock(m) && !r.error)) continue;
     const std::optional<double> v = m.value(r, nullptr);
+    soft = soft || (v && m.reference == MetricReference::Soft);
+    if (!v && !m.nullable) continue;  // a metric this run did not measure has no key
     out[json::json_pointer(std::string(m.path))] =
         !v ? json(nullptr) : m.integer ? json(std::uint64_t(*v)) : json(*v);
   }
   if (r.error) writePixelCounts(out["error"], *r.error);
+  // With two references in play, the error block names each measured metric's
+  // (metric_table.h MetricReference); with the ground truth alone every metric is its.
+  if (soft)
+    for (const Metric& m : metricTable())
+      if (m.reference != MetricReference::None && m.value(r, nullptr))
+        out["error"]["reference"][std::string(m.name)] = referenceName(m.reference);
 }
 
 }  // namespace testbed

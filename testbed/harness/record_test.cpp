@@ -91,6 +91,20 @@ TEST(Record, ErrorBlockHasExactlyTheContractKeys) {
   EXPECT_TRUE(j["error"]["soft_rmse"].is_null());
   r.error->softRmse = 0.25;
   EXPECT_EQ(json(r)["error"]["soft_rmse"].get<double>(), 0.25);
+  // Against the area-light reference too: the penumbra metrics, and each metric's reference.
+  r.error->softPenumbraMae = 0.125;
+  r.error->softOutsideMae = 0.0625;
+  r.error->softUmbraLeak = 0.5;
+  const json soft = r;
+  keys.clear();
+  for (const auto& item : soft.at("error").items()) keys.insert(item.key());
+  EXPECT_EQ(keys, (std::set<std::string>{"mismatch_pct", "edge_mismatch_pct", "rmse", "leak_pct", "overestimation_pct",
+                                         "boundary_px", "soft_rmse", "soft_penumbra_mae", "soft_outside_mae",
+                                         "soft_umbra_leak", "reference"}));
+  EXPECT_EQ(soft["error"]["reference"]["rmse"], "hard");
+  EXPECT_EQ(soft["error"]["reference"]["soft_umbra_leak"], "soft");
+  EXPECT_EQ(soft.get<Record>().error->softUmbraLeak, 0.5);
+  EXPECT_EQ(json(soft.get<Record>()), soft);
   r.error.reset();
   EXPECT_TRUE(json(r)["error"].is_null());
   EXPECT_FALSE(json(r).get<Record>().error.has_value());

@@ -68,6 +68,28 @@ std::vector<std::uint8_t> boundaryMask(const ImageF& image, const std::vector<st
   return mask;
 }
 
+// The soft metrics' running sums over the receivers, by the reference's region.
+struct SoftSums {
+  double penumbraError = 0, outsideError = 0, umbraVisibility = 0;
+  std::size_t penumbra = 0, outside = 0, umbra = 0;
+
+  void add(float v, float reference) {
+    const double error = std::fabs(double(v) - double(reference));
+    if (reference > kPenumbraEpsilon && reference < 1 - kPenumbraEpsilon) {
+      penumbraError += error;
+      ++penumbra;
+      return;
+    }
+    outsideError += error;
+    ++outside;
+    if (reference <= kPenumbraEpsilon) {
+      umbraVisibility += v;
+      ++umbra;
+    }
+  }
+  static double mean(double sum, std::size_t count) { return count == 0 ? 0.0 : sum / double(count); }
+};
+
 double percent(std::size_t part, std::size_t whole) { return whole == 0 ? 0.0 : 100.0 * double(part) / double(whole); }
 
 }  // namespace
@@ -100,6 +122,7 @@ ErrorMetrics computeErrorMetrics(const ImageF& visibility, const ImageF& groundT
   std::size_t mismatches = 0, bandPixels = 0, bandMismatches = 0, gtLit = 0;
   std::size_t farShadow = 0, leaks = 0, farLit = 0, overestimates = 0;
   double sumSq = 0, softSumSq = 0;
+  SoftSums soft;
   for (std::size_t i = 0; i < n; ++i) {
     if (!receiver[i]) continue;
     const float v = visibility.pixels[i], gt = groundTruth.pixels[i];
@@ -111,6 +134,7 @@ ErrorMetrics computeErrorMetrics(const ImageF& visibility, const ImageF& groundT
     if (areaReference) {
       const double s = double(v) - double(areaReference->pixels[i]);
       softSumSq += s * s;
+      soft.add(v, areaReference->pixels[i]);
     }
     if (gtDist2[i] <= band2) {
       ++bandPixels;
@@ -139,7 +163,12 @@ ErrorMetrics computeErrorMetrics(const ImageF& visibility, const ImageF& groundT
   m.rmse = std::sqrt(sumSq / double(receivers));
   m.leakPct = percent(leaks, farShadow);
   m.overestimationPct = percent(overestimates, farLit);
-  if (areaReference) m.softRmse = std::sqrt(softSumSq / double(receivers));
+  if (areaReference) {
+    m.softRmse = std::sqrt(softSumSq / double(receivers));
+    m.softPenumbraMae = soft.mean(soft.penumbraError, soft.penumbra);
+    m.softOutsideMae = soft.mean(soft.outsideError, soft.outside);
+    m.softUmbraLeak = soft.mean(soft.umbraVisibility, soft.umbra);
+  }
 
   std::size_t gtCount = 0, techCount = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -177,6 +206,23 @@ std::optional<const char*> groundTruthFlag(const ErrorMetrics& m) {
   if (m.gtLitReceivers == 0) return "entirely unlit from the camera";
   if (m.gtBoundaryPixels == 0) return "no shadow boundary";
   return std::nullopt;
+}
+
+ImageF softErrorHeatMap(const ImageF& visibility, const ImageF& reference) {
+  checkAll(visibility, reference);
+  ImageF out{reference.width, reference.height, 3, {}};
+  out.pixels.resize(reference.pixels.size() * 3);
+  for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
+    const float v = visibility.pixels[i], r = reference.pixels[i];
+    std::array<float, 3> c = kHeatBackground;
+    if (!std::isnan(r)) {
+      const auto& tint = v > r ? kHeatFalseLit : kHeatFalseShadow;
+      const float a = std::min(1.0f, std::fabs(v - r)), grey = std::clamp(r, 0.0f, 1.0f);
+      for (int k = 0; k < 3; ++k) c[k] = (1 - a) * ((1 - grey) * kHeatShadow[k] + grey * kHeatLit[k]) + a * tint[k];
+    }
+    std::copy(c.begin(), c.end(), out.pixels.begin() + std::ptrdiff_t(i * 3));
+  }
+  return out;
 }
 
 ImageF errorHeatMap(const ImageF& visibility, const ImageF& groundTruth) {

@@ -14,6 +14,11 @@
 
 namespace testbed {
 
+// The area-light reference of N samples holds multiples of 1/N: with eps = 0.01 (and
+// N < 100) a pixel is in its penumbra exactly when at least one sample sees the light and
+// one does not, whatever the rounding of the N blended weights.
+inline constexpr double kPenumbraEpsilon = 0.01;
+
 struct MetricOptions {
   double marginPx = 8;    // leak/overestimation ignore pixels this close to a GT boundary
   double edgeBandPx = 3;  // edge_mismatch_pct counts pixels this close to a GT boundary
@@ -27,7 +32,12 @@ struct ErrorMetrics {
   double overestimationPct = 0;   // of GT-lit receivers > marginPx from a GT boundary: % with v < 0.5
   double boundaryMean = 0;        // pooled symmetric boundary distance, pixels
   double boundaryP95 = 0;         // its 95th percentile (nearest rank)
-  std::optional<double> softRmse; // RMSE against the area-light reference, if given
+  // Against the area-light reference a, if given (docs/ground-truth-and-metrics.md
+  // "Soft-shadow metrics"): RMSE over every receiver; mean |v - a| inside the reference's
+  // penumbra (kPenumbraEpsilon < a < 1 - kPenumbraEpsilon) and outside it; and the leak
+  // into its umbra (a <= kPenumbraEpsilon), the mean of v there. An empty region gives 0.
+  std::optional<double> softRmse;
+  std::optional<double> softPenumbraMae, softOutsideMae, softUmbraLeak;
   int receivers = 0;              // number of receiver pixels
   int gtBoundaryPixels = 0;       // number of GT boundary pixels
   // The denominators of the percentages, in pixels (0 receivers: not counted, as in a
@@ -69,6 +79,12 @@ inline std::size_t p95Index(std::size_t n) { return (95 * n + 99) / 100 - 1; }
 
 ErrorMetrics computeErrorMetrics(const ImageF& visibility, const ImageF& groundTruth,
                                  const ImageF* areaReference = nullptr, const MetricOptions& options = {});
+
+// The soft counterpart of errorHeatMap against a filtered reference (the area light's):
+// background pixels kHeatBackground, others the reference's grey (kHeatShadow at 0 to
+// kHeatLit at 1) blended toward red (v > reference) or blue (v < reference) by
+// min(1, |v - reference|). No binary classes: a penumbra has none.
+ImageF softErrorHeatMap(const ImageF& visibility, const ImageF& reference);
 
 // Heat-map colours (linear RGB in [0, 1]).
 inline constexpr std::array<float, 3> kHeatBackground{0.12f, 0.12f, 0.12f};  // gt NaN: darkest grey

@@ -180,6 +180,60 @@ TEST(Metrics, SoftRmseOnlyWithReference) {
   EXPECT_EQ(m.rmse, 0);
 }
 
+// A 10x1 reference: umbra (0) at x 0-2, penumbra ramp 0.25, 0.5, 0.75 at x 3-5, lit (1) at
+// x 6-9; the edges of the region (eps itself, 1 - eps) fall outside the penumbra.
+ImageF softReference() {
+  const float values[10] = {0, 0, float(kPenumbraEpsilon), 0.25f, 0.5f, 0.75f, float(1 - kPenumbraEpsilon), 1, 1, 1};
+  return makeImage(10, 1, [&](int x, int) { return values[x]; });
+}
+
+TEST(SoftMetrics, PenumbraAndOutsideErrorsSplitByTheReferencesRegion) {
+  const ImageF reference = softReference();
+  // Hard shadow at x < 5: in the penumbra |0-0.25| + |0-0.5| + |1-0.75| = 1 over 3 pixels;
+  // outside: x 0-1 exact, x 2 off by eps, x 6 by eps, x 7-9 exact: 2 eps over 7 pixels.
+  const ImageF hard = makeImage(10, 1, [](int x, int) { return x < 5 ? 0.f : 1.f; });
+  const ErrorMetrics m = computeErrorMetrics(hard, hard, &reference);
+  ASSERT_TRUE(m.softPenumbraMae && m.softOutsideMae && m.softUmbraLeak);
+  EXPECT_NEAR(*m.softPenumbraMae, 1.0 / 3.0, 1e-7);
+  EXPECT_NEAR(*m.softOutsideMae, 2 * kPenumbraEpsilon / 7, 1e-7);
+  EXPECT_DOUBLE_EQ(*m.softUmbraLeak, 0.0);  // every umbra pixel (x 0-2) reads 0
+  // RMSE over all 10: (0.25² + 0.5² + 0.25² + 2 eps²) / 10.
+  const double eps2 = kPenumbraEpsilon * kPenumbraEpsilon;
+  EXPECT_NEAR(*m.softRmse, std::sqrt((0.0625 + 0.25 + 0.0625 + 2 * eps2) / 10), 1e-7);
+}
+
+TEST(SoftMetrics, UmbraLeakIsTheMeanVisibilityInTheReferencesUmbra) {
+  const ImageF reference = softReference();
+  // Light bleeding: 0.3 everywhere the reference is in umbra (x 0-2), exact elsewhere.
+  const ImageF bleeding = makeImage(10, 1, [&](int x, int) { return x < 3 ? 0.3f : reference.at(x, 0); });
+  const ErrorMetrics m = computeErrorMetrics(bleeding, reference, &reference);
+  EXPECT_NEAR(*m.softUmbraLeak, 0.3, 1e-7);
+  EXPECT_DOUBLE_EQ(*m.softPenumbraMae, 0.0);
+  EXPECT_NEAR(*m.softOutsideMae, (0.3 + 0.3 + (0.3 - kPenumbraEpsilon)) / 7, 1e-7);
+}
+
+TEST(SoftMetrics, AReferenceWithoutPenumbraOrUmbraGivesZeros) {
+  const ImageF lit = makeImage(4, 4, [](int, int) { return 1.f; });
+  const ImageF dark = makeImage(4, 4, [](int, int) { return 0.f; });
+  const ErrorMetrics m = computeErrorMetrics(dark, lit, &lit);
+  EXPECT_DOUBLE_EQ(*m.softPenumbraMae, 0.0);  // no penumbra: empty region
+  EXPECT_DOUBLE_EQ(*m.softUmbraLeak, 0.0);    // no umbra
+  EXPECT_DOUBLE_EQ(*m.softOutsideMae, 1.0);
+  EXPECT_FALSE(computeErrorMetrics(dark, lit).softPenumbraMae.has_value());  // no reference, no soft metric
+}
+
+TEST(SoftMetrics, SoftHeatMapBlendsTheReferencesGreyTowardTheErrorsSign) {
+  const ImageF reference = makeImage(3, 1, [](int x, int) { return x == 0 ? kNaN : 0.5f; });
+  const ImageF v = makeImage(3, 1, [](int x, int) { return x == 1 ? 0.5f : 1.0f; });
+  const ImageF map = softErrorHeatMap(v, reference);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_FLOAT_EQ(map.at(0, 0, k), kHeatBackground[k]);
+    const float grey = 0.5f * kHeatShadow[k] + 0.5f * kHeatLit[k];
+    EXPECT_FLOAT_EQ(map.at(1, 0, k), grey);                                  // exact: plain grey
+    EXPECT_FLOAT_EQ(map.at(2, 0, k), 0.5f * grey + 0.5f * kHeatFalseLit[k]);  // 0.5 too lit: half red
+  }
+}
+
 TEST(Metrics, BadInputsThrow) {
   const ImageF gt = makeImage(8, 6, [](int x, int) { return x < 4 ? 1.f : 0.f; });
   EXPECT_THROW(computeErrorMetrics(makeImage(8, 7, [](int, int) { return 1.f; }), gt), std::invalid_argument);

@@ -14,13 +14,16 @@ struct ComparisonEntry {
   Record record;          // the technique's record with its error block
   ImageF visibility;      // one channel, NaN background
   ImageF shaded;          // RGB, for people
-  ImageF heatMap;         // RGB error classes against the ground truth
+  ImageF heatMap;         // RGB error classes against the reference (errorHeatMap or softErrorHeatMap)
 };
 
 struct Comparison {
   std::string scene;
   Record groundTruth;              // the ground truth's record (its cost is reported too)
   ImageF groundTruthVisibility;
+  // The images' reference: false, the point-light ground truth above; true, the area-light
+  // reference (`compare --reference soft`), whose visibility then replaces it here.
+  bool softReference = false;
   std::vector<ComparisonEntry> entries;  // the first is the baseline `sm`
 };
 
@@ -34,7 +37,9 @@ ImageF comparisonGrid(const Comparison& comparison);
 std::string speedVsErrorSvg(const Comparison& comparison);
 
 // The top-left corner of the `window`² square with the most mismatching receiver pixels
-// (binary at 0.5) between `visibility` and `groundTruth`; ties go to the first in scan order.
-std::pair<int, int> worstWindow(const ImageF& visibility, const ImageF& groundTruth, int window);
+// (binary at 0.5) between `visibility` and `groundTruth`, or with `soft` the largest sum of
+// |visibility - reference| (a penumbra has no binary classes); ties go to the first in scan
+// order.
+std::pair<int, int> worstWindow(const ImageF& visibility, const ImageF& groundTruth, int window, bool soft = false);
 
 }  // namespace testbed

@@ -64,22 +64,25 @@ std::string label(const Comparison& c, const ComparisonEntry& entry) {
 
 }  // namespace
 
-std::pair<int, int> worstWindow(const ImageF& visibility, const ImageF& groundTruth, int window) {
+std::pair<int, int> worstWindow(const ImageF& visibility, const ImageF& groundTruth, int window, bool soft) {
   const int w = visibility.width, h = visibility.height;
   window = std::min({window, w, h});
-  // Summed-area table of mismatches makes every window's count O(1).
-  std::vector<int> sum(std::size_t(w + 1) * (h + 1), 0);
-  auto at = [&](int x, int y) -> int& { return sum[std::size_t(y) * (w + 1) + x]; };
+  // Summed-area table of the errors makes every window's sum O(1). Binary mismatches are
+  // small integers, exact in a double like the soft errors' sums.
+  std::vector<double> sum(std::size_t(w + 1) * (h + 1), 0);
+  auto at = [&](int x, int y) -> double& { return sum[std::size_t(y) * (w + 1) + x]; };
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const float v = visibility.at(x, y), g = groundTruth.at(x, y);
-      const int miss = !std::isnan(g) && !std::isnan(v) && ((v >= 0.5f) != (g >= 0.5f));
+      const bool both = !std::isnan(g) && !std::isnan(v);
+      const double miss = !both ? 0.0 : soft ? std::fabs(double(v) - double(g)) : double((v >= 0.5f) != (g >= 0.5f));
       at(x + 1, y + 1) = miss + at(x, y + 1) + at(x + 1, y) - at(x, y);
     }
-  int best = -1, bestX = 0, bestY = 0;
+  double best = -1;
+  int bestX = 0, bestY = 0;
   for (int y = 0; y + window <= h; ++y)
     for (int x = 0; x + window <= w; ++x) {
-      const int count = at(x + window, y + window) - at(x, y + window) - at(x + window, y) + at(x, y);
+      const double count = at(x + window, y + window) - at(x, y + window) - at(x + window, y) + at(x, y);
       if (count > best) {
         best = count;
         bestX = x;
@@ -110,7 +113,7 @@ ImageF comparisonGrid(const Comparison& c) {
     const int top = int(row) * rowHeight + kGap;
     OIIO::ImageBufAlgo::render_text(canvas, kGap, top + 18, label(c, entry), 16, kFont, white);
     const int imagesTop = top + kLabelHeight;
-    const auto [wx, wy] = worstWindow(entry.visibility, gt, kWindow);
+    const auto [wx, wy] = worstWindow(entry.visibility, gt, kWindow, c.softReference);
     paste(canvas, scaled(entry.shaded, tileWidth, tileHeight), kGap, imagesTop);
     paste(canvas, scaled(entry.heatMap, tileWidth, tileHeight), 2 * kGap + kTileWidth, imagesTop);
     // Mark the close-up window on the heat map.
@@ -121,9 +124,11 @@ ImageF comparisonGrid(const Comparison& c) {
     paste(canvas, closeUp(greyRgb(entry.visibility), wx, wy), closeLeft, imagesTop);
     paste(canvas, closeUp(gtGrey, wx, wy), closeLeft + zoomed + kGap, imagesTop);
   }
+  const std::string reference = c.softReference ? "area-light reference" : "ground truth";
   OIIO::ImageBufAlgo::render_text(canvas, kGap, height - 8,
-                                  "columns: shaded image | error heat map (yellow box: worst window) | "
-                                  "close-up of the worst window: technique, ground truth",
+                                  "columns: shaded image | error heat map against the " + reference +
+                                      " (yellow box: worst window) | close-up of the worst window: technique, " +
+                                      reference,
                                   14, kFont, white);
   ImageF out{width, height, 3, std::vector<float>(std::size_t(width) * height * 3)};
   canvas.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, out.pixels.data());

@@ -37,5 +37,17 @@ TEST(ReportGrid, SizeIsBoundedForAnyAspectRatio) {
   }
 }
 
+// The soft close-up window follows the largest sum of |v - reference|, where binary
+// classes may see nothing: sixteen 0.3 errors that stay on the lit side in one corner, a
+// single 0.1 error across 0.5 in the other.
+TEST(ReportGrid, SoftWorstWindowSumsAbsoluteErrors) {
+  ImageF reference = constant(20, 20, 1, 0.5f), v = constant(20, 20, 1, 0.5f);
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x) v.pixels[std::size_t(y) * 20 + x] = 0.8f;  // 16 pixels 0.3 too lit, same class
+  v.pixels[19 * 20 + 19] = 0.4f;  // one pixel 0.1 too dark, across 0.5: a binary mismatch
+  EXPECT_EQ(worstWindow(v, reference, 4, true), (std::pair<int, int>{0, 0}));
+  EXPECT_EQ(worstWindow(v, reference, 4, false), (std::pair<int, int>{16, 16}));
+}
+
 }  // namespace
 }  // namespace testbed

@@ -43,7 +43,7 @@ TEST(ReportMarkdown, GivesTheTechniqueOnlyAndTheWholeFrameRatio) {
   // Without an error block every error column reads "–".
   EXPECT_NE(rowOf(md, "sm").find("| 1 | – | – | – | – | – | – | – | – |"), std::string::npos) << rowOf(md, "sm");
   EXPECT_NE(md.find("| technique | GPU ms (queries) | wall ms | × sm | × sm frame | memory KiB | invocations (k) | mismatch % | edge mismatch % "
-                    "| RMSE | leak % | overestimation % | boundary px mean | boundary px p95 | soft RMSE |\n|---|---:|"),
+                    "| RMSE | leak % | overestimation % | boundary px mean | boundary px p95 | soft RMSE | soft MAE penumbra | soft MAE outside penumbra | soft umbra leak |\n|---|---:|"),
             std::string::npos)
       << md;
   EXPECT_NE(md.find("Ground truth (`groundtruth`): 30.00 ms, 3.00× sm;"), std::string::npos) << md;

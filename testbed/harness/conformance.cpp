@@ -1,0 +1,401 @@
+#include "testbed/harness/conformance.h"
+
+#include <cmath>
+#include <cstring>
+#include <exception>
+#include <functional>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "testbed/core/error.h"
+#include "testbed/gl/render_target.h"
+#include "testbed/harness/record.h"
+#include "testbed/scene/primitives.h"
+
+namespace testbed {
+namespace {
+
+// An edtsm-like screen-space filter reaches this far (its max_filter_radius is 15 px).
+constexpr int kScreenFilterPx = 16;
+
+bool isReceiver(const ImageF& positions, std::size_t i) { return positions.pixels[4 * i + 3] >= 0.5f; }
+
+std::string valueText(float value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+std::string pixelText(const ImageF& image, std::size_t i) {
+  return "pixel (" + std::to_string(i % std::size_t(image.width)) + ", " + std::to_string(i / std::size_t(image.width)) +
+         ") = " + valueText(image.pixels[i]);
+}
+
+ConformanceCheck pass(std::string name, std::string detail) { return {std::move(name), true, std::move(detail)}; }
+ConformanceCheck fail(std::string name, std::string detail) { return {std::move(name), false, std::move(detail)}; }
+
+// Runs `body`; a technique that throws fails the check with what it threw.
+ConformanceCheck guarded(const std::string& name, const std::function<ConformanceCheck()>& body) {
+  try {
+    return body();
+  } catch (const std::exception& error) {
+    return fail(name, std::string("the technique threw: ") + error.what());
+  }
+}
+
+LightDesc directionalLight(glm::vec3 direction, float extent) {
+  LightDesc light;
+  light.type = LightType::Directional;
+  light.direction = glm::normalize(direction);
+  light.target = {0, 0, 0};
+  light.extent = extent;
+  return light;
+}
+
+LightDesc spotLight(glm::vec3 eye, glm::vec3 target, float fov) {
+  LightDesc light;
+  light.type = LightType::Spot;
+  light.eye = eye;
+  light.target = target;
+  light.fovDegrees = fov;
+  return light;
+}
+
+// A light whose frustum is used as given, so that it can cut the floor.
+LightDesc given(LightDesc light) {
+  light.fit = false;
+  return light;
+}
+
+LightDesc spotWithRange(glm::vec3 eye, glm::vec3 target, float fov, float nearPlane, float farPlane) {
+  LightDesc light = spotLight(eye, target, fov);
+  light.nearPlane = nearPlane;
+  light.farPlane = farPlane;
+  return given(light);
+}
+
+void addObject(Scene& scene, std::string label, TriMesh mesh) {
+  SceneObject object;
+  object.label = std::move(label);
+  object.mesh = std::move(mesh);
+  scene.objects.push_back(std::move(object));
+}
+
+// An 80×80 floor at y = 0 seen obliquely from above.
+Scene floorScene(const std::string& name, const LightDesc& light) {
+  Scene scene;
+  scene.name = name;
+  scene.camera.eye = {28, 34, -30};
+  scene.camera.target = {0, 0, 0};
+  scene.light = light;
+  addObject(scene, "plane", makePlane(80, 80));
+  return scene;
+}
+
+TechniqueRun runWith(FrameRunner& runner, const RegisteredTechnique& technique,
+                     const std::map<std::string, std::string>& set) {
+  return runner.run(technique, resolveParameters(technique.info->id, technique.info->parameters, set));
+}
+
+// Receivers not finite or outside [0, 1]; `example` names the first.
+int badReceivers(const ImageF& visibility, const ImageF& positions, std::string& example) {
+  int bad = 0;
+  for (std::size_t i = 0; i < visibility.pixels.size(); ++i) {
+    if (!isReceiver(positions, i)) continue;
+    const float v = visibility.pixels[i];
+    if (std::isfinite(v) && v >= 0.0f && v <= 1.0f) continue;
+    if (bad++ == 0) example = pixelText(visibility, i);
+  }
+  return bad;
+}
+
+bool sameBits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+}  // namespace
+
+RenderSettings conformanceSettings(glm::ivec2 size, int mapSize) {
+  RenderSettings settings;
+  settings.size = size;
+  settings.shadowMapSize = mapSize;
+  return settings;
+}
+
+std::vector<std::string> parameterLimits(const ParameterSpec& spec) {
+  switch (spec.type) {
+    case ParameterType::Bool: return {"true", "false"};
+    case ParameterType::Choice: return spec.choices;
+    case ParameterType::Int: {
+      auto lo = std::int64_t(spec.min), hi = std::int64_t(spec.max);
+      if (spec.oddOnly && lo % 2 == 0) ++lo;
+      if (spec.oddOnly && hi % 2 == 0) --hi;
+      return {std::to_string(lo), std::to_string(hi)};
+    }
+    case ParameterType::Float: return {formatValue(spec.min), formatValue(spec.max)};
+  }
+  return {};
+}
+
+std::vector<std::string> invalidValues(const ParameterSpec& spec) {
+  switch (spec.type) {
+    case ParameterType::Bool: return {"maybe", "2", ""};
+    case ParameterType::Choice: return {"not-one-of-the-choices", ""};
+    case ParameterType::Int: {
+      std::vector<std::string> values = {std::to_string(std::int64_t(spec.min) - 1),
+                                         std::to_string(std::int64_t(spec.max) + 1), "1.5", "ten", "nan", ""};
+      // An even value inside the range, if the range holds one.
+      const auto even = std::int64_t(spec.min) + (std::int64_t(spec.min) % 2 != 0);
+      if (spec.oddOnly && double(even) <= spec.max) values.push_back(std::to_string(even));
+      return values;
+    }
+    case ParameterType::Float: {
+      const double step = std::max(1.0, spec.max - spec.min);
+      return {formatValue(spec.min - step), formatValue(spec.max + step), "ten", "nan", "inf", ""};
+    }
+  }
+  return {};
+}
+
+const char* frustumSideName(FrustumSide side) {
+  static const char* const kNames[] = {"inside", "left", "right", "bottom", "top", "near", "far", "behind", "unclear"};
+  return kNames[int(side)];
+}
+
+FrustumSide frustumSide(const LightTransforms& light, const glm::vec3& p, int mapSize) {
+  const glm::vec4 clip = light.viewProjection() * glm::vec4(p, 1.0f);
+  if (!(clip.w > 0.0f)) return FrustumSide::Behind;
+  const glm::vec3 q = glm::vec3(clip) / clip.w * 0.5f + 0.5f;
+  const float xy = 3.0f / float(mapSize), z = 0.02f;
+  if (q.x < -xy) return FrustumSide::Left;
+  if (q.x > 1 + xy) return FrustumSide::Right;
+  if (q.y < -xy) return FrustumSide::Bottom;
+  if (q.y > 1 + xy) return FrustumSide::Top;
+  if (q.z < -z) return FrustumSide::Near;
+  if (q.z > 1 + z) return FrustumSide::Far;
+  const bool inside = q.x > xy && q.y > xy && q.x < 1 - xy && q.y < 1 - xy && q.z > z && q.z < 1 - z;
+  return inside ? FrustumSide::Inside : FrustumSide::Unclear;
+}
+
+std::vector<FrustumSide> frustumSides(const FrameRunner& runner) {
+  const ImageF& positions = runner.positions();
+  std::vector<FrustumSide> sides(positions.pixels.size() / 4, FrustumSide::Unclear);
+  for (std::size_t i = 0; i < sides.size(); ++i) {
+    if (!isReceiver(positions, i)) continue;
+    const glm::vec3 p(positions.pixels[4 * i], positions.pixels[4 * i + 1], positions.pixels[4 * i + 2]);
+    sides[i] = frustumSide(runner.light(), p, runner.settings().shadowMapSize);
+  }
+  return sides;
+}
+
+std::vector<bool> clearOfScreenFilters(const std::vector<FrustumSide>& sides, const ImageF& positions, int filterPx) {
+  const int w = positions.width, h = positions.height;
+  auto decided = [&](std::size_t i) { return sides[i] != FrustumSide::Inside && sides[i] != FrustumSide::Unclear; };
+  std::vector<bool> out(sides.size(), false);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i = std::size_t(y) * w + x;
+      if (!decided(i) || !isReceiver(positions, i)) continue;
+      bool clear = true;
+      for (int dy = -filterPx; dy <= filterPx && clear; ++dy)
+        for (int dx = -filterPx; dx <= filterPx && clear; ++dx) {
+          const int u = x + dx, v = y + dy;
+          if (u < 0 || v < 0 || u >= w || v >= h) continue;
+          const std::size_t j = std::size_t(v) * w + u;
+          clear = !isReceiver(positions, j) || decided(j);
+        }
+      out[i] = clear;
+    }
+  return out;
+}
+
+std::vector<FrustumCase> frustumCases() {
+  using S = FrustumSide;
+  const float e = glm::radians(20.0f);
+  auto floor = [](const char* name, const LightDesc& light) { return floorScene(name, light); };
+  return {
+      {"spot-four-sides", floor("spot-four-sides", spotWithRange({0, 30, 0}, {0, 0, 0}, 60, 20, 40)),
+       {S::Left, S::Right, S::Bottom, S::Top}},
+      {"spot-near-far", floor("spot-near-far", spotWithRange({-50, 10, 0}, {0, 0, 0}, 90, 30, 60)), {S::Near, S::Far}},
+      {"spot-behind", floor("spot-behind", spotWithRange({0, 8, 0}, {10, 4, 0}, 120, 0.5f, 80)), {S::Behind}},
+      {"directional-four-sides", floor("directional-four-sides", given(directionalLight({0, -1, 0}, 20))),
+       {S::Left, S::Right, S::Bottom, S::Top}},
+      {"directional-near-far",
+       floor("directional-near-far", given(directionalLight({std::cos(e), -std::sin(e), 0}, 20))),
+       {S::Near, S::Far}},
+  };
+}
+
+Scene conformanceBoxScene(bool spot) {
+  Scene scene = floorScene(spot ? "box-over-floor-spot" : "box-over-floor-directional",
+                           spot ? spotLight({6, 40, 4}, {0, 0, 0}, 60) : directionalLight({0.3f, -1, 0.2f}, 40));
+  TriMesh box = makeBox(10, 2, 10);
+  for (auto v : box.vertices()) box.point(v) += OpenMesh::Vec3f(0, 11, 0);
+  box.update_normals();
+  addObject(scene, "box", std::move(box));
+  return scene;
+}
+
+ConformanceCheck checkParameterExtremes(const RegisteredTechnique& technique) {
+  const char* name = "parameter-extremes";
+  int runs = 0;
+  for (const bool spot : {true, false}) {
+    const Scene scene = conformanceBoxScene(spot);
+    FrameRunner runner(scene, conformanceSettings({160, 90}, 128));
+    std::vector<std::pair<std::string, std::string>> cases = {{"", ""}};  // the defaults first
+    for (const auto& spec : technique.info->parameters)
+      for (const auto& value : parameterLimits(spec)) cases.push_back({spec.name, value});
+    for (const auto& [parameter, value] : cases) {
+      const std::string what = (parameter.empty() ? std::string("the defaults") : "--set " + parameter + "=" + value) +
+                               " on " + scene.name;
+      TechniqueRun run;
+      try {
+        run = parameter.empty() ? runWith(runner, technique, {}) : runWith(runner, technique, {{parameter, value}});
+      } catch (const std::exception& error) {
+        return fail(name, what + ": the technique threw: " + error.what());
+      }
+      ++runs;
+      std::string example;
+      if (const int bad = badReceivers(run.visibility, runner.positions(), example); bad > 0)
+        return fail(name, what + ": " + std::to_string(bad) + " receivers not finite or outside [0, 1], first " + example);
+    }
+  }
+  return pass(name, std::to_string(runs) + " runs (defaults and every parameter at each limit, spot and directional)"
+                    ": every receiver finite in [0, 1]");
+}
+
+ConformanceCheck checkFacing(const RegisteredTechnique& technique, const ParameterSet& parameters) {
+  const char* name = "facing";
+  return guarded(name, [&] {
+    // The floor's lit side faces the camera above it; both lights shine from below.
+    const std::pair<const char*, LightDesc> lights[] = {
+        {"directional from below", directionalLight({0, 1, 0}, 60)},
+        {"spot from below", spotLight({0, -30, 0}, {0, 0, 0}, 90)}};
+    int receivers = 0;
+    for (const auto& [label, light] : lights) {
+      const Scene scene = floorScene(label, light);
+      FrameRunner runner(scene, conformanceSettings({160, 90}, 128));
+      const TechniqueRun run = runner.run(technique, parameters);
+      for (std::size_t i = 0; i < run.visibility.pixels.size(); ++i) {
+        if (!isReceiver(runner.positions(), i)) continue;
+        ++receivers;
+        if (run.visibility.pixels[i] != 0.0f)
+          return fail(name, std::string(label) + ": a receiver facing away from the light is not 0, " +
+                                pixelText(run.visibility, i));
+      }
+    }
+    return pass(name, std::to_string(receivers) + " receivers facing away from the light (directional and spot) read 0");
+  });
+}
+
+ConformanceCheck checkLightFrustum(const RegisteredTechnique& technique, const ParameterSet& parameters) {
+  const char* name = "light-frustum";
+  return guarded(name, [&] {
+    const bool filtered = technique.info->output == OutputKind::Filtered;
+    int judged = 0;
+    for (const FrustumCase& c : frustumCases()) {
+      FrameRunner runner(c.scene, conformanceSettings({320, 180}, 256));
+      const auto sides = frustumSides(runner);
+      const auto clear = clearOfScreenFilters(sides, runner.positions(), kScreenFilterPx);
+      const TechniqueRun run = runner.run(technique, parameters);
+      int inside = 0, darkInside = 0;
+      for (std::size_t i = 0; i < sides.size(); ++i) {
+        const FrustumSide side = sides[i];
+        if (side == FrustumSide::Unclear || (filtered && side != FrustumSide::Inside && !clear[i])) continue;
+        ++judged;
+        const bool lit = run.visibility.pixels[i] >= 0.5f;
+        if (side == FrustumSide::Inside) {
+          ++inside;
+          darkInside += !lit;
+        } else if (lit) {
+          return fail(name, c.name + ": a receiver beyond the frustum's " + frustumSideName(side) +
+                                " side reads lit, " + pixelText(run.visibility, i));
+        }
+      }
+      // A filtered technique's own artefacts (msm's self-shadowing where the floor grazes
+      // a spot's rays) may darken a few receivers inside; that is not the convention.
+      if (darkInside > (filtered ? inside / 200 : 0))
+        return fail(name, c.name + ": " + std::to_string(darkInside) + " of " + std::to_string(inside) +
+                              " bare receivers inside the frustum read shadow");
+    }
+    return pass(name, std::to_string(judged) + " receivers on 5 floors cut by the light's frustum: shadow beyond each " +
+                          "side and behind a spot, lit inside");
+  });
+}
+
+ConformanceCheck checkDeterminism(const RegisteredTechnique& technique, const ParameterSet& parameters) {
+  const char* name = "determinism";
+  return guarded(name, [&] {
+    const Scene scene = conformanceBoxScene(true);
+    FrameRunner runner(scene, conformanceSettings({160, 90}, 128));
+    const ImageF first = runner.run(technique, parameters).visibility;
+    const ImageF second = runner.run(technique, parameters).visibility;
+    std::size_t differing = 0, example = 0;
+    for (std::size_t i = 0; i < first.pixels.size(); ++i)
+      if (!sameBits(first.pixels[i], second.pixels[i]) && differing++ == 0) example = i;
+    if (differing > 0)
+      return fail(name, std::to_string(differing) + " pixels differ between two runs, first " +
+                            pixelText(first, example) + " then " + valueText(second.pixels[example]));
+    return pass(name, "two runs, each a fresh instance, give bit-identical visibility");
+  });
+}
+
+ConformanceCheck checkMemoryLedger(const RegisteredTechnique& technique, const ParameterSet& parameters) {
+  const char* name = "memory-ledger";
+  return guarded(name, [&] {
+    const Scene scene = conformanceBoxScene(true);
+    const RenderSettings settings = conformanceSettings({160, 90}, 128);
+    FrameRunner runner(scene, settings);
+    const std::uint64_t before = GpuMemoryLedger::processBytes();
+    std::uint64_t visibilityTarget = 0;  // the harness's, outside the technique's ledger
+    {
+      RenderTarget probe;
+      probe.ensure({.size = settings.size, .color = GL_R32F});
+      visibilityTarget = GpuMemoryLedger::processBytes() - before;
+    }
+    std::uint64_t live = 0;
+    nlohmann::json record;
+    {
+      TechniqueSession session(runner, technique, parameters);
+      const TechniqueRun run = runner.run(session, parameters, true);
+      live = GpuMemoryLedger::processBytes() - before - visibilityTarget;
+      record = makeRecord(run, runner, "");
+    }
+    const std::uint64_t leaked = GpuMemoryLedger::processBytes() - before;
+    std::uint64_t split = 0;
+    for (const auto& resource : record.value("memory", nlohmann::json::array())) split += resource["bytes"].get<std::uint64_t>();
+    const auto booked = record["memory_bytes"].get<std::uint64_t>();
+    if (split != booked)
+      return fail(name, "the record's memory block sums to " + std::to_string(split) + " bytes, memory_bytes is " +
+                            std::to_string(booked));
+    if (live != booked)
+      return fail(name, "the technique's GL objects hold " + std::to_string(live) + " bytes, its ledger books " +
+                            std::to_string(booked));
+    if (leaked != 0)
+      return fail(name, std::to_string(leaked) + " bytes of GL objects outlive the technique's instance");
+    return pass(name, "memory_bytes " + std::to_string(booked) + " = the memory block's sum = the bytes its GL " +
+                          "objects hold, all released with the instance");
+  });
+}
+
+ConformanceCheck checkBadValuesRefused(const RegisteredTechnique& technique) {
+  const char* name = "bad-set-refused";
+  const std::string& id = technique.info->id;
+  int refused = 0;
+  auto refuses = [&](const std::string& parameter, const std::string& value) {
+    try {
+      (void)resolveParameters(id, technique.info->parameters, {{parameter, value}});
+    } catch (const InputError&) {
+      ++refused;
+      return true;
+    }
+    return false;
+  };
+  if (!refuses("no-such-parameter", "1")) return fail(name, "--set no-such-parameter=1 was accepted");
+  for (const auto& spec : technique.info->parameters)
+    for (const auto& value : invalidValues(spec))
+      if (!refuses(spec.name, value)) return fail(name, "--set " + spec.name + "=" + value + " was accepted");
+  return pass(name, std::to_string(refused) + " bad --set values refused (unknown name, out of range, not a number, " +
+                        "NaN, even for odd-only, not a choice)");
+}
+
+}  // namespace testbed

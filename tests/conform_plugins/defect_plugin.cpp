@@ -1,0 +1,67 @@
+// Techniques with one planted defect each, for tests/conform_test.cpp: `testbed conform`
+// must fail them on the line of the convention they break and pass the others. Each is
+// `sm` (the registry's own instance, so the plugin needs no shader) plus its defect,
+// chosen by the DEFECT_* definition it is compiled with (CMakeLists.txt here).
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include "testbed/gl/objects.h"
+#include "testbed/technique/plugin.h"
+#include "testbed/technique/with_parameters.h"
+
+namespace {
+
+using namespace testbed;
+
+struct DefectParameters {
+  float strength;
+  void reflect(ParameterBinder& b) { b.real("strength", strength, 0.5, 0.0, 1.0, "how much of the defect to apply"); }
+};
+
+class DefectTechnique final : public WithParameters<DefectParameters> {
+ public:
+  void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {
+    if (!sm_) {
+      sm_ = findTechnique("sm").create();
+      sm_->configure(resolveParameters("sm", findTechnique("sm").info->parameters, {}));
+#if defined(DEFECT_HIDDEN_MEMORY)
+      // A texture booked in a private ledger: the technique's own ledger never sees it.
+      GpuMemoryLedger::Scope scope(hiddenLedger_);
+      hiddenTexture_ = Texture::create2D(GL_R32F, 256, 256);
+#endif
+    }
+    sm_->render(in, timer, out);
+#if defined(DEFECT_NAN_AT_EXTREME)
+    // Divides by (1 - strength): NaN everywhere at the parameter's declared maximum.
+    if (parameters_.strength == 1.0f) {
+      const float nan = std::numeric_limits<float>::quiet_NaN();
+      glClearTexImage(out.texture.id(), 0, GL_RED, GL_FLOAT, &nan);
+    }
+#elif defined(DEFECT_NONDETERMINISTIC)
+    // Dims the frame by how many frames the process has rendered, not by the frame: 0 stays
+    // 0 and lit stays above 0.9, so only runs compared with each other can tell.
+    static int frames = 0;
+    const float dim = 1.0f - float(++frames % 7) / 100.0f;
+    std::vector<float> pixels(std::size_t(in.size.x) * std::size_t(in.size.y));
+    glGetTextureImage(out.texture.id(), 0, GL_RED, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)), pixels.data());
+    for (float& v : pixels) v *= dim;
+    glTextureSubImage2D(out.texture.id(), 0, 0, 0, in.size.x, in.size.y, GL_RED, GL_FLOAT, pixels.data());
+#endif
+  }
+
+ private:
+  std::unique_ptr<ShadowTechnique> sm_;
+  GpuMemoryLedger hiddenLedger_;  // outlives the texture booked in it
+  Texture hiddenTexture_;
+};
+
+}  // namespace
+
+TESTBED_PLUGIN(registrar) {
+  registrar.add<DefectTechnique>({.id = DEFECT_ID,
+                                  .output = OutputKind::Hard,
+                                  .citation = "a test fixture, no paper",
+                                  .summary = "sm with one planted defect for `testbed conform`"});
+}

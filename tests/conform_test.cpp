@@ -1,0 +1,102 @@
+// `testbed conform` (docs/conformance.md): every in-tree technique passes every check (one
+// test each, so a regression names its technique), the plugins of tests/conform_plugins/
+// each fail on the line of the defect planted in them and pass the rest, and bad input
+// exits 2 before any check runs.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "testbed/technique/registry.h"
+#include "tests/cli_helpers.h"
+
+namespace testbed {
+namespace {
+
+using test::RunResult;
+using test::runTestbed;
+
+// The lines `conform` printed that start with `prefix` ("PASS ", "FAIL ").
+std::vector<std::string> linesStartingWith(const std::string& out, const std::string& prefix) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < out.size()) {
+    const std::size_t end = out.find('\n', start);
+    const std::string line = out.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    if (line.rfind(prefix, 0) == 0) lines.push_back(line);
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return lines;
+}
+
+constexpr std::size_t kChecks = 7;
+
+// SKIP: viewer-equals-render in a build without the viewer.
+std::size_t passedOrSkipped(const std::string& out) {
+  return linesStartingWith(out, "PASS ").size() + linesStartingWith(out, "SKIP ").size();
+}
+
+std::vector<std::string> inTreeIds() {
+  std::vector<std::string> ids;
+  for (const auto& t : registeredTechniques()) ids.push_back(t.info->id);
+  return ids;
+}
+
+class ConformInTree : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ConformInTree, PassesEveryCheck) {
+  const RunResult run = runTestbed({"conform", "--technique", GetParam()});
+  EXPECT_EQ(run.exitCode, 0) << run.describe() << "\n" << run.out;
+  EXPECT_EQ(passedOrSkipped(run.out), kChecks) << run.out;
+  EXPECT_TRUE(linesStartingWith(run.out, "FAIL ").empty()) << run.out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Techniques, ConformInTree, ::testing::ValuesIn(inTreeIds()), [](const auto& info) {
+  std::string name = info.param;
+  for (char& c : name)
+    if (c == '-') c = '_';
+  return name;
+});
+
+// A plugin with one defect: exit 1, FAIL on exactly the `failing` checks, PASS on the rest.
+// A check this build skips (SKIP) is left out of `failing`.
+void expectFailures(const char* plugin, const std::string& id, std::vector<std::string> failing) {
+  const RunResult run = runTestbed({"conform", "--plugin", plugin, "--technique", id});
+  for (const auto& skipped : linesStartingWith(run.out, "SKIP "))
+    std::erase_if(failing, [&](const std::string& check) { return skipped.rfind("SKIP " + check + ":", 0) == 0; });
+  EXPECT_EQ(run.exitCode, 1) << run.describe() << "\n" << run.out;
+  const auto failures = linesStartingWith(run.out, "FAIL ");
+  ASSERT_EQ(failures.size(), failing.size()) << run.out;
+  for (std::size_t i = 0; i < failing.size(); ++i)
+    EXPECT_EQ(failures[i].rfind("FAIL " + failing[i] + ":", 0), 0u) << failures[i];
+  EXPECT_EQ(passedOrSkipped(run.out), kChecks - failing.size()) << run.out;
+}
+
+TEST(ConformDefects, NanAtAParameterExtremeFailsTheExtremes) {
+  expectFailures(TESTBED_CONFORM_NAN_AT_EXTREME, "defect-nan-at-extreme", {"parameter-extremes"});
+}
+
+// The viewer's frame is a third run: it differs from render's as the two runs differ.
+TEST(ConformDefects, AFrameCounterInTheOutputFailsDeterminism) {
+  expectFailures(TESTBED_CONFORM_NONDETERMINISTIC, "defect-nondeterministic", {"viewer-equals-render", "determinism"});
+}
+
+TEST(ConformDefects, MemoryHiddenFromTheLedgerFailsTheLedger) {
+  expectFailures(TESTBED_CONFORM_HIDDEN_MEMORY, "defect-hidden-memory", {"memory-ledger"});
+}
+
+TEST(ConformBadInput, ExitsTwoWithOneLineAndNoCheck) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"conform", "--technique", "no-such-technique"},
+        std::vector<std::string>{"conform", "--technique", "pcf", "--set", "kernel=4"},
+        std::vector<std::string>{"conform", "--technique", "pcf", "--set", "no_such=1"},
+        std::vector<std::string>{"conform"}}) {
+    const RunResult run = runTestbed(args);
+    EXPECT_EQ(run.exitCode, 2) << run.describe();
+    EXPECT_TRUE(linesStartingWith(run.out, "PASS ").empty() && linesStartingWith(run.out, "FAIL ").empty()) << run.out;
+  }
+}
+
+}  // namespace
+}  // namespace testbed
