@@ -34,7 +34,8 @@ function(testbed_embed_shaders target)
       COMMAND ${CMAKE_COMMAND} -DINPUT=${abs} -DOUTPUT=${out} -DKEY=${key} -DIDENT=${ident} ${check}
               -P "${TESTBED_CMAKE_DIR}/EmbedShader.cmake"
       DEPENDS "${abs}" "${TESTBED_CMAKE_DIR}/EmbedShader.cmake"
-      COMMENT "Embedding ${key}")
+      COMMENT "Embedding ${key}"
+      VERBATIM)
     list(APPEND outputs "${out}")
   endforeach()
   target_sources(${target} PRIVATE ${outputs})

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdlib>
-#include <iostream>
 #include <stdexcept>
 #include <string>
 
@@ -357,6 +356,11 @@ std::vector<std::string> Program::unsetUniforms() const {
     GLsizei length = 0;
     glGetActiveUniformName(id(), GLuint(i), GLsizei(name.size()), &length, name.data());
     const std::string uniform = name.substr(0, std::size_t(length));
+    // Images take their unit from layout(binding = N), never from set().
+    const GLuint index = GLuint(i);
+    GLint type = 0;
+    glGetActiveUniformsiv(id(), 1, &index, GL_UNIFORM_TYPE, &type);
+    if (type >= GL_IMAGE_1D && type <= GL_UNSIGNED_INT_IMAGE_2D_MULTISAMPLE_ARRAY) continue;
     // Block members and built-ins have no location; an array is set through its first element.
     const GLint at = glGetUniformLocation(id(), uniform.c_str());
     if (at >= 0 && !std::binary_search(setLocations_.begin(), setLocations_.end(), at))
@@ -366,21 +370,7 @@ std::vector<std::string> Program::unsetUniforms() const {
   return unset;
 }
 
-void Program::use() const {
-  if (!checkedSet_) {
-    const std::vector<std::string> unset = unsetUniforms();
-    if (!unset.empty()) {
-      std::string names;
-      for (const auto& n : unset) names += (names.empty() ? "" : ", ") + n;
-      const std::string message = name_ + ": uniform " + names + " used by the shader but never set (reads 0)";
-      if (unsetUniformPolicy() == UnsetUniformPolicy::Error)
-        throw std::logic_error(message + " [TESTBED_UNSET_UNIFORMS=error]");
-      std::cerr << "testbed: warning: " << message << "\n";
-    }
-    checkedSet_ = true;
-  }
-  glUseProgram(id());
-}
+void Program::use() const { glUseProgram(id()); }
 
 UnsetUniformPolicy unsetUniformPolicy() {
   static const UnsetUniformPolicy policy = [] {

@@ -180,11 +180,11 @@ class VertexArray : public GlObject {
 // uniform that is declared but compiled away (unused in this variant) is ignored.
 //
 // A uniform the program uses and nobody ever set reads 0, which renders garbage without a
-// word (a forgotten light parameter). use() checks once per program that every active
-// uniform has been set through set(); what a miss does is the process's
-// unsetUniformPolicy(): a warning on stderr by default, an error (std::logic_error) where
-// the environment has TESTBED_UNSET_UNIFORMS=error, as the test binary sets for itself and
-// every testbed it runs.
+// word (a forgotten light parameter). requireUniformsSet() (render/uniform_check.h) runs
+// right before the draws of every screen pass, the G-buffer and the shadow map: every
+// active uniform (images aside: their unit is their layout binding) must have been set
+// through set(); a miss warns on stderr, or is a std::logic_error where the environment
+// has TESTBED_UNSET_UNIFORMS=error (unsetUniformPolicy()), as the test binary sets it.
 class Program : public GlObject {
  public:
   Program() = default;
@@ -203,7 +203,7 @@ class Program : public GlObject {
   void set(const char* name, const glm::ivec2& value) const;
   void set(const char* name, const glm::mat4& value) const;
   void set(const char* name, const std::vector<float>& values) const;  // a float array
-  // glUseProgram, after the check above (the first time only).
+  // glUseProgram (uniforms may be set after it: the check above runs at the draw).
   void use() const;
   // The active uniforms never set through set(), sorted ("uLightFar").
   std::vector<std::string> unsetUniforms() const;

@@ -11,6 +11,7 @@
 
 #include "testbed/core/error.h"
 #include "testbed/gl/objects.h"
+#include "testbed/render/uniform_check.h"
 #include "tests/gl_fixture.h"
 
 namespace testbed {
@@ -83,16 +84,15 @@ TEST(UnsetUniforms, AUsedUniformNeverSetIsCaughtBeforeTheDraw) {
   // tests/test_main.cpp sets TESTBED_UNSET_UNIFORMS=error for this binary and the testbeds it runs.
   ASSERT_EQ(unsetUniformPolicy(), UnsetUniformPolicy::Error);
   try {
-    program.use();
+    requireUniformsSet(program);
     FAIL() << "expected the unset uniform to be an error";
   } catch (const std::logic_error& error) {
-    EXPECT_NE(std::string(error.what()).find("test/diag/forgetful.frag: uniform uForgotten used by the shader but never set"),
-              std::string::npos)
+    EXPECT_NE(std::string(error.what()).find("uniform uForgotten used by the shader but never set"), std::string::npos)
         << error.what();
   }
   program.set("uForgotten", 0.0f);
   EXPECT_TRUE(program.unsetUniforms().empty());
-  EXPECT_NO_THROW(program.use());
+  EXPECT_NO_THROW(requireUniformsSet(program));
 }
 
 }  // namespace
