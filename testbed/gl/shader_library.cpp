@@ -17,9 +17,13 @@ std::map<std::string, std::string, std::less<>>& library() {
   return shaders;
 }
 
+// Lines of file i are numbered from i·kLinesPerFile, so the line alone names the file: Mesa
+// reports some errors (an undeclared identifier) under source string 0 whatever #line said.
+constexpr long kLinesPerFile = 100000;
+
 // "#line <line> <source>": the next line is line `line` of source string `source`.
 std::string lineDirective(int line, std::size_t source) {
-  return "#line " + std::to_string(line) + " " + std::to_string(source) + "\n";
+  return "#line " + std::to_string(long(source) * kLinesPerFile + line) + " " + std::to_string(source) + "\n";
 }
 
 void expandInto(std::string_view key, std::set<std::string, std::less<>>& included,
@@ -92,7 +96,13 @@ std::string describeLogLine(std::string_view line, const std::vector<std::string
   if (number < 0 || at >= line.size() || line[at] != ':') return {};
   std::string_view message = line.substr(at + 1);
   while (!message.empty() && message.front() == ' ') message.remove_prefix(1);
-  std::string out = files[std::size_t(source)] + ":" + std::to_string(number);
+  std::size_t file = std::size_t(source);
+  if (number >= kLinesPerFile) {  // the line number names the file (lineDirective)
+    file = std::size_t(number / kLinesPerFile);
+    number %= kLinesPerFile;
+    if (file >= files.size()) return {};
+  }
+  std::string out = files[file] + ":" + std::to_string(number);
   if (column >= 0) out += ":" + std::to_string(column);
   out += ": ";
   if (!severity.empty()) out += severity + ": ";

@@ -41,7 +41,9 @@ TEST(ShaderLog, ExpansionCountsEachFilesOwnLines) {
   const ExpandedShader e = expandShader("test/diag/lines_main.frag");
   EXPECT_EQ(e.files, (std::vector<std::string>{"test/diag/lines_main.frag", "test/diag/lines_helper.glsl"}));
   EXPECT_EQ(e.text,
-            "#version 450 core\n#line 2 0\n// two\n#line 1 1\nfloat one() { return 1.0; }\n#line 4 0\nvoid main() {}\n");
+            "#version 450 core\n#line 2 0\n// two\n#line 100001 1\nfloat one() { return 1.0; }\n#line 4 0\nvoid main() {}\n");
+  // The line alone names the file: some Mesa errors come under source string 0.
+  EXPECT_EQ(describeShaderLog("0:100003(2): error: x", e.files, "p"), "test/diag/lines_helper.glsl:3:2: error: x");
 }
 
 // A real compile on this machine's driver: the author's file and line, not the line of

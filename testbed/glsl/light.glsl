@@ -49,7 +49,7 @@ float linearizeLightDepth(float stored) {
 // changes along two directions on the receiver (screen derivatives dFdx/dFdy, or tangent
 // steps); returns (∂z/∂u, ∂z/∂v) by inverting the 2×2 Jacobian ∂(u,v)/∂(x,y). Infinite
 // for a receiver seen edge-on by the light (callers clamp; the facing rule shadows those).
-vec2 receiverPlaneDepthGradient(vec3 dx, vec3 dy) {
+vec2 receiverPlaneDepthGradientFromSteps(vec3 dx, vec3 dy) {
   vec2 gradient = vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z);
   return gradient / (dx.x * dy.y - dx.y * dy.x);
 }
@@ -66,8 +66,8 @@ vec2 receiverPlaneDepthGradient(vec3 position, vec3 normal) {
   // Steps small against the distance to the light keep both points in front of a spot light.
   float reach = 0.01 * (uLightOrthographic == 1 ? uLightExtent : lightViewDepthOf(position));
   vec3 centre = lightCoordinates(position);
-  return receiverPlaneDepthGradient(lightCoordinates(position + reach * t1) - centre,
-                                    lightCoordinates(position + reach * t2) - centre);
+  return receiverPlaneDepthGradientFromSteps(lightCoordinates(position + reach * t1) - centre,
+                                             lightCoordinates(position + reach * t2) - centre);
 }
 
 // The receiver's depth at the tap `offset` (in uv) from its own coordinates `light`.

@@ -132,8 +132,8 @@ TEST(LightGlsl, LightCoordinatesDoNotClampOutsideTheFrustum) {
 TEST(LightGlsl, ReceiverPlaneGradientFromDerivatives) {
   // Isidoro's 2×2 inverse on Jacobians with known answers: z rises a per unit u when
   // (dx, dy) step 2 in u and 4 in v, so ∂z/∂u = a/2 and ∂z/∂v = b/4; and a sheared pair.
-  const auto g = probe("vec4(receiverPlaneDepthGradient(vec3(2, 0, a.x), vec3(0, 4, a.y)),"
-                       " receiverPlaneDepthGradient(vec3(1, 1, a.x + a.y), vec3(1, -1, a.x - a.y)))",
+  const auto g = probe("vec4(receiverPlaneDepthGradientFromSteps(vec3(2, 0, a.x), vec3(0, 4, a.y)),"
+                       " receiverPlaneDepthGradientFromSteps(vec3(1, 1, a.x + a.y), vec3(1, -1, a.x - a.y)))",
                        sun(), 0.0f, {glm::vec4(0.3f, -0.8f, 0, 0)});
   EXPECT_NEAR(g[0].x, 0.15f, 1e-6f);
   EXPECT_NEAR(g[0].y, -0.2f, 1e-6f);

@@ -4,9 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "testbed/render/uniform_check.h"
 #include "testbed/scene/light_fit.h"
 #include "testbed/technique/technique.h"
-#include "testbed/render/uniform_check.h"
 
 namespace testbed {
 
