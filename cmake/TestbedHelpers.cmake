@@ -4,12 +4,25 @@
 # This folder, for EmbedShader.cmake: a plugin project's CMAKE_SOURCE_DIR is its own.
 set(TESTBED_CMAKE_DIR "${CMAKE_CURRENT_LIST_DIR}")
 
-# testbed_embed_shaders(<target> FILES a.frag b.glsl ...)
+# testbed_embed_shaders(<target> FILES a.frag b.glsl ... [CHECK_INCLUDES])
 # Embeds GLSL sources into <target> at build time. Each file is registered under its path
 # relative to the repository root (a plugin's: its project root), which is also the name
-# `#include "..."` uses.
+# `#include "..."` uses. CHECK_INCLUDES (plugins): every include must be one of FILES or
+# the testbed's own, checked when the file is embedded (EmbedShader.cmake).
 function(testbed_embed_shaders target)
-  cmake_parse_arguments(ARG "" "" "FILES" ${ARGN})
+  cmake_parse_arguments(ARG "CHECK_INCLUDES" "" "FILES" ${ARGN})
+  set(check "")
+  if(ARG_CHECK_INCLUDES)
+    set(keys "")
+    foreach(file IN LISTS ARG_FILES)
+      get_filename_component(abs "${file}" ABSOLUTE)
+      file(RELATIVE_PATH key "${CMAKE_SOURCE_DIR}" "${abs}")
+      list(APPEND keys "${key}")
+    endforeach()
+    list(JOIN keys "|" keys)
+    get_filename_component(root "${TESTBED_CMAKE_DIR}/.." ABSOLUTE)
+    set(check "-DSHADER_KEYS=${keys}" "-DTESTBED_ROOT=${root}" "-DTARGET=${target}")
+  endif()
   set(outputs "")
   foreach(file IN LISTS ARG_FILES)
     get_filename_component(abs "${file}" ABSOLUTE)
@@ -18,10 +31,11 @@ function(testbed_embed_shaders target)
     set(out "${CMAKE_CURRENT_BINARY_DIR}/embedded/${ident}.cpp")
     add_custom_command(
       OUTPUT "${out}"
-      COMMAND ${CMAKE_COMMAND} -DINPUT=${abs} -DOUTPUT=${out} -DKEY=${key} -DIDENT=${ident}
+      COMMAND ${CMAKE_COMMAND} -DINPUT=${abs} -DOUTPUT=${out} -DKEY=${key} -DIDENT=${ident} ${check}
               -P "${TESTBED_CMAKE_DIR}/EmbedShader.cmake"
       DEPENDS "${abs}" "${TESTBED_CMAKE_DIR}/EmbedShader.cmake"
-      COMMENT "Embedding ${key}")
+      COMMENT "Embedding ${key}"
+      VERBATIM)
     list(APPEND outputs "${out}")
   endforeach()
   target_sources(${target} PRIVATE ${outputs})
@@ -68,12 +82,14 @@ endfunction()
 # definitions only) and leaves the core's symbols undefined: they bind to the `testbed`
 # executable at load time. Shader keys are paths relative to CMAKE_SOURCE_DIR; a key the
 # testbed already has keeps the testbed's text, so keep shaders in a folder of your own.
+# List every shader, helper .glsl files included: an include that is neither in SHADERS
+# nor the testbed's stops the build.
 function(testbed_add_plugin name)
   cmake_parse_arguments(ARG "" "FAMILY" "SOURCES;SHADERS" ${ARGN})
   add_library(${name} MODULE ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE testbed::plugin_api)
   testbed_set_technique_family(${name} ${ARG_FAMILY})
   if(ARG_SHADERS)
-    testbed_embed_shaders(${name} FILES ${ARG_SHADERS})
+    testbed_embed_shaders(${name} FILES ${ARG_SHADERS} CHECK_INCLUDES)
   endif()
 endfunction()

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -95,6 +97,109 @@ TEST(Plugin, CompareRanksItBesideSm) {
   EXPECT_EQ((*example)["error"], (*sm)["error"]);
   EXPECT_NE(readFile(tmp / "report.md").find("example-sm"), std::string::npos);
   EXPECT_TRUE(fs::exists(tmp / "example-sm.exr"));
+}
+
+// ---------------------------------------------------------------------------------------
+// The PCSS walk-through plugin (tests/plugin_example/pcss.cpp): a soft technique built only
+// on the plugin API, the frame-aware setUniforms hook and testbed/glsl/light.glsl.
+
+// The wall scene with its spot light's area radius replaced (0.5 → narrow penumbrae).
+fs::path wallWithRadius(const TempDir& tmp, double radius) {
+  json scene = json::parse(readFile(kScene));
+  scene["light"]["radius"] = radius;
+  return writeFile(tmp / ("wall_r" + std::to_string(radius) + ".json"), scene.dump());
+}
+
+const std::vector<std::string> kPcssSize = {"--size", "320x180", "--shadow-map", "512"};
+
+// Renders pcss on `scene` and returns its visibility.
+testbed::ImageF renderPcss(const TempDir& tmp, const fs::path& scene, const std::string& name) {
+  const RunResult run = runTestbed(with({"render", "--plugin", TESTBED_PLUGIN_PCSS, "--scene", scene.string(),
+                                         "--technique", "pcss", "--out", (tmp / name).string()},
+                                        kPcssSize));
+  EXPECT_EQ(run.exitCode, 0) << run.describe();
+  EXPECT_EQ(run.err.find("warning"), std::string::npos) << run.err;
+  return testbed::readImage(tmp / name / "pcss.exr");
+}
+
+struct VisibilityCounts {
+  int receivers = 0, outOfRange = 0, penumbra = 0, shadowed = 0;
+};
+
+// Receivers are the non-NaN pixels; penumbra: strictly between 2 % and 98 % lit.
+VisibilityCounts countVisibility(const testbed::ImageF& v) {
+  VisibilityCounts c;
+  for (float x : v.pixels) {
+    if (std::isnan(x)) continue;
+    ++c.receivers;
+    c.outOfRange += !(std::isfinite(x) && x >= 0.0f && x <= 1.0f);
+    c.penumbra += x > 0.02f && x < 0.98f;
+    c.shadowed += x < 0.5f;
+  }
+  return c;
+}
+
+TEST(PcssPlugin, LoadsAndRendersFiniteVisibilityInZeroOne) {
+  const RunResult list = runTestbed({"list", "--json", "--plugin", TESTBED_PLUGIN_PCSS});
+  ASSERT_EQ(list.exitCode, 0) << list.describe();
+  bool found = false;
+  for (const auto& t : json::parse(list.out))
+    if (t["id"] == "pcss") {
+      found = true;
+      EXPECT_EQ(t["family"], "plugin_example");
+      EXPECT_EQ(t["output"], "filtered") << t.dump(2);
+    }
+  EXPECT_TRUE(found) << list.out;
+  TempDir tmp;
+  const VisibilityCounts c = countVisibility(renderPcss(tmp, kScene, "pcss"));
+  EXPECT_GT(c.receivers, 0);
+  EXPECT_EQ(c.outOfRange, 0);
+  EXPECT_GT(c.shadowed, 0) << "the wall's shadow";
+  EXPECT_GT(c.penumbra, 0) << "a radius-2 light gives penumbrae";
+}
+
+// Fernando's estimate: the penumbra scales with the light's size, so a light 6× wider
+// gives clearly more partly lit pixels on the same scene.
+// Forgetting --plugin: the closest in-tree ids and the option are suggested, on one line.
+TEST(PcssPlugin, WithoutPluginTheUnknownIdSuggestsTheClosestAndPlugin) {
+  TempDir tmp;
+  const RunResult run = runTestbed(with({"render", "--scene", kScene, "--technique", "pcss", "--out",
+                                         (tmp / "out").string()},
+                                        kSmall));
+  EXPECT_EQ(run.exitCode, 2) << run.describe();
+  EXPECT_NE(run.err.find("unknown technique 'pcss' (closest: pcf, "), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("--plugin PATH"), std::string::npos) << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+}
+
+TEST(PcssPlugin, PenumbraWidensWithTheLightRadius) {
+  TempDir tmp;
+  const VisibilityCounts narrow = countVisibility(renderPcss(tmp, wallWithRadius(tmp, 0.5), "narrow"));
+  const VisibilityCounts wide = countVisibility(renderPcss(tmp, wallWithRadius(tmp, 3.0), "wide"));
+  std::cout << "pcss penumbra pixels on wall (320x180, 512²): radius 0.5: " << narrow.penumbra
+            << ", radius 3: " << wide.penumbra << "\n";
+  EXPECT_EQ(narrow.outOfRange + wide.outOfRange, 0);
+  EXPECT_GT(narrow.penumbra, 0);
+  EXPECT_GT(wide.penumbra, 2 * narrow.penumbra);
+}
+
+// Against the area-light reference (compare --area-samples; the wall's light has radius 2)
+// PCSS's penumbrae score a lower soft RMSE than sm's hard edges.
+TEST(PcssPlugin, ScoresALowerSoftErrorThanSmAgainstTheAreaLightReference) {
+  TempDir tmp;
+  const RunResult run = runTestbed(with({"compare", "--plugin", TESTBED_PLUGIN_PCSS, "--scene", kScene,
+                                         "--techniques", "sm,pcss", "--area-samples", "32", "--out",
+                                         tmp.path().string()},
+                                        kPcssSize));
+  ASSERT_EQ(run.exitCode, 0) << run.describe();
+  std::map<std::string, double> soft;
+  for (const auto& record : json::parse(readFile(tmp / "metrics.json")))
+    if (record.contains("error") && record["error"].is_object() && record["error"]["soft_rmse"].is_number())
+      soft[record["technique"]] = record["error"]["soft_rmse"].get<double>();
+  ASSERT_TRUE(soft.count("sm") && soft.count("pcss")) << readFile(tmp / "metrics.json");
+  std::cout << "soft_rmse on wall (320x180, 512², 32 area samples): sm " << soft["sm"] << ", pcss " << soft["pcss"]
+            << "\n";
+  EXPECT_LT(soft["pcss"], soft["sm"]);
 }
 
 // ---------------------------------------------------------------------------------------

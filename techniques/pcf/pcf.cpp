@@ -26,7 +26,7 @@ class PercentageCloserFiltering final : public ShadowMapScreenTechnique<PcfParam
  public:
   PercentageCloserFiltering() : ShadowMapScreenTechnique("techniques/pcf/pcf_visibility.frag") {}
 
-  void setUniforms(const Program& program) const override {
+  void setUniforms(const Program& program, const FrameInputs&) const override {
     program.set("uBias", parameters_.bias);
     program.set("uKernel", parameters_.kernel);
     program.set("uBilinear", parameters_.bilinear ? 1 : 0);

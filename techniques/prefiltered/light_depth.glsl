@@ -4,9 +4,7 @@
 // whole scene into a sliver below 1 (the wall scene lies within [0.985, 0.995]), where the
 // exponential warps and the variance floors would have nothing to work with. The papers
 // all filter a linear depth.
-uniform mat4 uLightView;
-uniform float uLightNear;
-uniform float uLightFar;
+#include "testbed/glsl/light.glsl"
 
 float lightLinearDepth(vec3 world) {
   float distanceAlongAxis = -(uLightView * vec4(world, 1.0)).z;

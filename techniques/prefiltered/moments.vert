@@ -2,7 +2,6 @@
 // The scene from the light (the shared shadow map's transform) with its linear depth.
 #include "techniques/prefiltered/light_depth.glsl"
 layout(location = 0) in vec3 inPosition;
-uniform mat4 uLightViewProjection;
 out float vLightDepth;
 void main() {
   vLightDepth = lightLinearDepth(inPosition);

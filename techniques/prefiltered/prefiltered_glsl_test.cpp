@@ -353,7 +353,7 @@ TEST(BlurGlsl, WidestKernelSpreadsAnImpulseIntoItsWeights) {
                                          "#define BLUR_RADIUS " + std::to_string(radius) +
                                              "\n#define BLUR_STEP ivec2(1, 0)\n#define BLUR_STEP_COLUMNS 0\n"
                                              "#define BLUR_PACK 1\n#define BLUR_LAYERS 1\n");
-  glProgramUniform1fv(rows.id(), rows.location("uWeights"), GLsizei(weights.size()), weights.data());
+  rows.set("uWeights", weights);
   rows.set("uSource", 0);
   glBindTextureUnit(0, source.id());
   ScreenPass().draw(rows, target.framebuffer(), {n, n});

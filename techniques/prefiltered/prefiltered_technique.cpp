@@ -22,9 +22,6 @@ void PrefilteredBase::render(const FrameInputs& in, PassTimer& timer, const Visi
   bindReceiverInputs(visibility_, in);
   glBindTextureUnit(2, moments_.moments().id());
   visibility_.set("uMoments", 2);
-  visibility_.set("uLightView", in.light.view);
-  visibility_.set("uLightNear", in.light.nearPlane);
-  visibility_.set("uLightFar", in.light.farPlane);
   visibility_.set("uParams", params_);
   screen_.draw(visibility_, out.framebuffer, in.size);
 }

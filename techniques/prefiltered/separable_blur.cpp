@@ -60,7 +60,7 @@ void SeparableBlur::run(const Texture& moments, const Framebuffer& target, const
     layers_ = l;
   }
   for (const Program* program : {&rows_, &columns_}) {
-    glProgramUniform1fv(program->id(), program->location("uWeights"), GLsizei(weights.size()), weights.data());
+    program->set("uWeights", weights);
     program->set("uSource", 0);
   }
   const glm::ivec2 size(moments.width(), moments.height());

@@ -98,7 +98,7 @@ void SinglePassBase::render(const FrameInputs& in, PassTimer& timer, const Visib
   common_.setPath(in.path, depthLayout());
   const bool fast = in.path == TechniquePath::Fast;
   if (fast) {
-    renderFastInputs(shadowMap_.depth(), timer);
+    renderFastInputs(in, shadowMap_.depth(), timer);
     // Part of the classification's input (depth_image.h), timed with it.
     auto scope = timer.scope("classify");
     common_.updateDepthImage(shadowMap_.depth());
@@ -106,8 +106,8 @@ void SinglePassBase::render(const FrameInputs& in, PassTimer& timer, const Visib
   const auto bind = [&](const Program& program) {
     bindReceiverInputs(program, in);
     common_.bindLibrary(program, shadowMap_.depth());
-    setTechniqueUniforms(program);
-    if (fast) bindFastInputs(program);
+    setTechniqueUniforms(program, in);
+    if (fast) bindFastInputs(program, in);
   };
   screen_.setDefines(shaderDefines() + common_.libraryDefines());
   screen_.draw(in, out, timer, bind, "classify", "revectorize");

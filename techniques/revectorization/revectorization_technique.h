@@ -86,7 +86,8 @@ class SinglePassBase : public ShadowTechnique {
   // take part (debug view only; the shader decides for itself).
   SinglePassBase(std::string fragmentKey, bool bothSides) : bothSides_(bothSides), screen_(std::move(fragmentKey)) {}
   void configureCommon(const CommonParameters& parameters);
-  virtual void setTechniqueUniforms(const Program& program) const = 0;
+  // The technique's own uniforms of both screen-pass programs; `in` is the frame's.
+  virtual void setTechniqueUniforms(const Program& program, const FrameInputs& in) const = 0;
   // Compile-time settings of the screen pass's shaders.
   virtual std::string shaderDefines() const { return {}; }
   // The fast path's layout of the shadow map's depth image (depth_image.h).
@@ -94,8 +95,8 @@ class SinglePassBase : public ShadowTechnique {
   // The fast path's passes of the technique's own between the shadow map and the screen
   // pass (timed under their own names), and what they made bound to both screen-pass
   // programs.
-  virtual void renderFastInputs(const Texture& /*shadowMap*/, PassTimer& /*timer*/) {}
-  virtual void bindFastInputs(const Program& /*program*/) const {}
+  virtual void renderFastInputs(const FrameInputs& /*in*/, const Texture& /*shadowMap*/, PassTimer& /*timer*/) {}
+  virtual void bindFastInputs(const Program& /*program*/, const FrameInputs& /*in*/) const {}
   bool bothSides_;
 
  private:
@@ -129,7 +130,7 @@ class WithVisibilityChoice : public Technique {
 
  private:
   void configured() override { this->bothSides_ = this->parameters_.improved; }
-  void setTechniqueUniforms(const Program& program) const override {
+  void setTechniqueUniforms(const Program& program, const FrameInputs&) const override {
     program.set("uImproved", this->parameters_.improved ? 1 : 0);
   }
 };

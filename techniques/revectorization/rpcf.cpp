@@ -24,10 +24,10 @@ class Rpcf : public SinglePassTechnique<P> {
   std::string shaderDefines() const final {
     return "#define RPCF_KERNEL " + std::to_string(this->parameters_.kernel) + "\n";
   }
-  void renderFastInputs(const Texture& shadowMap, PassTimer& timer) final {
+  void renderFastInputs(const FrameInputs&, const Texture& shadowMap, PassTimer& timer) final {
     tiles_.render(shadowMap, this->parameters_.kernel, timer);
   }
-  void bindFastInputs(const Program& program) const final { tiles_.bind(program); }
+  void bindFastInputs(const Program& program, const FrameInputs&) const final { tiles_.bind(program); }
   // k×k taps each walking: their reads pay for a dearer copy (depth_image.h).
   DepthImage::Layout depthLayout() const final { return DepthImage::Layout::Texels; }
 
@@ -64,7 +64,7 @@ class RpcfRsmss final : public Rpcf<RpcfRsmssParameters> {
   RpcfRsmss() : Rpcf("techniques/revectorization/rpcf_rsmss.frag", true) {}
 
  private:
-  void setTechniqueUniforms(const Program&) const override {}
+  void setTechniqueUniforms(const Program&, const FrameInputs&) const override {}
 };
 
 TESTBED_REGISTER_TECHNIQUE(RpcfSmsr, .id = "rpcf-smsr", .output = OutputKind::Filtered, .citation = kCitation,

@@ -13,7 +13,7 @@ class Rsmss final : public SinglePassTechnique<CommonParameters> {
   Rsmss() : SinglePassTechnique("techniques/revectorization/rsmss.frag", true) {}
 
  private:
-  void setTechniqueUniforms(const Program&) const override {}
+  void setTechniqueUniforms(const Program&, const FrameInputs&) const override {}
 };
 
 TESTBED_REGISTER_TECHNIQUE(Rsmss, .id = "rsmss", .output = OutputKind::Filtered,

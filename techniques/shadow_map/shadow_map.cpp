@@ -18,7 +18,7 @@ struct PlainShadowMapParameters {
 class PlainShadowMap final : public ShadowMapScreenTechnique<PlainShadowMapParameters> {
  public:
   PlainShadowMap() : ShadowMapScreenTechnique("techniques/shadow_map/shadow_map_visibility.frag") {}
-  void setUniforms(const Program& program) const override { program.set("uBias", parameters_.bias); }
+  void setUniforms(const Program& program, const FrameInputs&) const override { program.set("uBias", parameters_.bias); }
 };
 
 TESTBED_REGISTER_TECHNIQUE(PlainShadowMap, .id = "sm", .output = OutputKind::Hard,

@@ -2,6 +2,8 @@
 // (one line naming the file/option/field), 1 any other failure; `check` returns 3 when it
 // finds regressions.
 #include <iostream>
+#include <sstream>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -57,7 +59,9 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const std::exception& error) {
     testbed::breakProgressLine();
-    std::cerr << "testbed: error: " << testbed::oneLine(error.what()) << "\n";
+    // A line per line of the message: a shader's compile errors come one per message.
+    std::istringstream lines(error.what());
+    for (std::string line; std::getline(lines, line);) std::cerr << "testbed: error: " << testbed::oneLine(line) << "\n";
     return 1;
   } catch (...) {
     testbed::breakProgressLine();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
@@ -260,9 +261,12 @@ void VertexArray::setFloatAttribute(GLuint index, GLint components, std::size_t 
 namespace {
 
 // Throws GlError with the info log (and deletes `object`) unless `status` (compile or link
-// status) is true: the one check of glCompileShader and glLinkProgram.
+// status) is true: the one check of glCompileShader and glLinkProgram. The message has one
+// line per compiler message, each naming the file and line it is about (`files`: the
+// expanded shader's, shader_library.h) or else `what` and the step.
 void checkBuilt(GLuint object, GLenum status, PFNGLGETSHADERIVPROC getiv, PFNGLGETSHADERINFOLOGPROC getLog,
-                PFNGLDELETESHADERPROC destroy, std::string_view what, const char* step) {
+                PFNGLDELETESHADERPROC destroy, std::string_view what, const char* step,
+                const std::vector<std::string>& files = {}) {
   GLint ok = 0;
   getiv(object, status, &ok);
   if (ok) return;
@@ -271,12 +275,15 @@ void checkBuilt(GLuint object, GLenum status, PFNGLGETSHADERIVPROC getiv, PFNGLG
   std::string log(std::size_t(std::max(length, 1)), '\0');
   getLog(object, length, nullptr, log.data());
   destroy(object);
-  throw GlError(std::string(what) + ": " + step + " error:\n" + log);
+  const std::string prefix = std::string(what) + ": " + step + " error";
+  const std::string described = describeShaderLog(log, files, prefix);
+  throw GlError(described.empty() ? prefix : described);
 }
 
 // Compiles one stage and appends its full source to `sources` (for declaredUniforms).
 GLuint compileStage(GLenum stage, std::string_view key, std::string_view defines, std::string& sources) {
-  std::string source = expandShaderSource(key);
+  ExpandedShader expanded = expandShader(key);
+  std::string& source = expanded.text;
   // The defines go right after the #version line, which must stay first.
   const auto versionEnd = source.find('\n');
   if (source.rfind("#version", 0) != 0 || versionEnd == std::string::npos)
@@ -287,7 +294,8 @@ GLuint compileStage(GLenum stage, std::string_view key, std::string_view defines
   GLuint shader = glCreateShader(stage);
   glShaderSource(shader, 1, &text, nullptr);
   glCompileShader(shader);
-  checkBuilt(shader, GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog, glDeleteShader, key, "compile");
+  checkBuilt(shader, GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog, glDeleteShader, key, "compile",
+             expanded.files);
   return shader;
 }
 
@@ -333,7 +341,43 @@ GLint Program::checkedLocation(const char* name) const {
   const GLint at = location(name);
   if (at < 0 && !std::binary_search(declared_.begin(), declared_.end(), std::string_view(name)))
     throw std::logic_error(name_ + ": no uniform named " + name + " in its sources (misspelt?)");
+  const auto slot = std::lower_bound(setLocations_.begin(), setLocations_.end(), at);
+  if (at >= 0 && (slot == setLocations_.end() || *slot != at)) setLocations_.insert(slot, at);
   return at;
+}
+
+std::vector<std::string> Program::unsetUniforms() const {
+  GLint count = 0, longest = 0;
+  glGetProgramiv(id(), GL_ACTIVE_UNIFORMS, &count);
+  glGetProgramiv(id(), GL_ACTIVE_UNIFORM_MAX_LENGTH, &longest);
+  std::vector<std::string> unset;
+  std::string name(std::size_t(std::max(longest, 1)), '\0');
+  for (GLint i = 0; i < count; ++i) {
+    GLsizei length = 0;
+    glGetActiveUniformName(id(), GLuint(i), GLsizei(name.size()), &length, name.data());
+    const std::string uniform = name.substr(0, std::size_t(length));
+    // Images take their unit from layout(binding = N), never from set().
+    const GLuint index = GLuint(i);
+    GLint type = 0;
+    glGetActiveUniformsiv(id(), 1, &index, GL_UNIFORM_TYPE, &type);
+    if (type >= GL_IMAGE_1D && type <= GL_UNSIGNED_INT_IMAGE_2D_MULTISAMPLE_ARRAY) continue;
+    // Block members and built-ins have no location; an array is set through its first element.
+    const GLint at = glGetUniformLocation(id(), uniform.c_str());
+    if (at >= 0 && !std::binary_search(setLocations_.begin(), setLocations_.end(), at))
+      unset.push_back(uniform.substr(0, uniform.find('[')));
+  }
+  std::sort(unset.begin(), unset.end());
+  return unset;
+}
+
+void Program::use() const { glUseProgram(id()); }
+
+UnsetUniformPolicy unsetUniformPolicy() {
+  static const UnsetUniformPolicy policy = [] {
+    const char* value = std::getenv("TESTBED_UNSET_UNIFORMS");
+    return value && std::string_view(value) == "error" ? UnsetUniformPolicy::Error : UnsetUniformPolicy::Warn;
+  }();
+  return policy;
 }
 void Program::set(const char* name, int v) const { glProgramUniform1i(id(), checkedLocation(name), v); }
 void Program::set(const char* name, float v) const { glProgramUniform1f(id(), checkedLocation(name), v); }
@@ -348,6 +392,9 @@ void Program::set(const char* name, const glm::vec4& v) const {
 }
 void Program::set(const char* name, const glm::ivec2& v) const {
   glProgramUniform2iv(id(), checkedLocation(name), 1, glm::value_ptr(v));
+}
+void Program::set(const char* name, const std::vector<float>& v) const {
+  glProgramUniform1fv(id(), checkedLocation(name), GLsizei(v.size()), v.data());
 }
 void Program::set(const char* name, const glm::mat4& v) const {
   glProgramUniformMatrix4fv(id(), checkedLocation(name), 1, GL_FALSE, glm::value_ptr(v));

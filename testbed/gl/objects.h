@@ -178,6 +178,13 @@ class VertexArray : public GlObject {
 // set() throws std::logic_error naming the program and the uniform when no source of the
 // program declares that uniform (a misspelt name would otherwise be silently ignored); a
 // uniform that is declared but compiled away (unused in this variant) is ignored.
+//
+// A uniform the program uses and nobody ever set reads 0, which renders garbage without a
+// word (a forgotten light parameter). requireUniformsSet() (render/uniform_check.h) runs
+// right before the draws of every screen pass, the G-buffer and the shadow map: every
+// active uniform (images aside: their unit is their layout binding) must have been set
+// through set(); a miss warns on stderr, or is a std::logic_error where the environment
+// has TESTBED_UNSET_UNIFORMS=error (unsetUniformPolicy()), as the test binary sets it.
 class Program : public GlObject {
  public:
   Program() = default;
@@ -195,7 +202,11 @@ class Program : public GlObject {
   void set(const char* name, const glm::vec4& value) const;
   void set(const char* name, const glm::ivec2& value) const;
   void set(const char* name, const glm::mat4& value) const;
-  void use() const { glUseProgram(id()); }
+  void set(const char* name, const std::vector<float>& values) const;  // a float array
+  // glUseProgram (uniforms may be set after it: the check above runs at the draw).
+  void use() const;
+  // The active uniforms never set through set(), sorted ("uLightFar").
+  std::vector<std::string> unsetUniforms() const;
 
  private:
   Program(GLuint id, std::string name, std::vector<std::string> declared);
@@ -204,7 +215,13 @@ class Program : public GlObject {
 
   std::string name_;                   // the fragment or compute shader's key
   std::vector<std::string> declared_;  // uniform names of its sources, sorted
+  mutable std::vector<GLint> setLocations_;  // every location set() wrote, sorted
+  mutable bool checkedSet_ = false;
 };
+
+enum class UnsetUniformPolicy { Warn, Error };
+// From TESTBED_UNSET_UNIFORMS ("error" or "warn"; unset: warn), read once.
+UnsetUniformPolicy unsetUniformPolicy();
 
 // Throws GlError naming `what` if the GL error flag is set.
 void checkGlError(std::string_view what);

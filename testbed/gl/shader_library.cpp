@@ -17,31 +17,96 @@ std::map<std::string, std::string, std::less<>>& library() {
   return shaders;
 }
 
+// Lines of file i are numbered from i·kLinesPerFile, so the line alone names the file: Mesa
+// reports some errors (an undeclared identifier) under source string 0 whatever #line said.
+constexpr long kLinesPerFile = 100000;
+
+// "#line <line> <source>": the next line is line `line` of source string `source`.
+std::string lineDirective(int line, std::size_t source) {
+  return "#line " + std::to_string(long(source) * kLinesPerFile + line) + " " + std::to_string(source) + "\n";
+}
+
 void expandInto(std::string_view key, std::set<std::string, std::less<>>& included,
-                std::vector<std::string>& stack, std::string& out) {
+                std::vector<std::string>& stack, ExpandedShader& out) {
   for (const auto& open : stack)
     if (open == key) throw GlError("shader include cycle at " + std::string(key));
   stack.emplace_back(key);
+  const std::size_t source = out.files.size();
+  out.files.emplace_back(key);
   std::istringstream lines{std::string(embeddedShader(key))};
   std::string line;
-  while (std::getline(lines, line)) {
+  for (int number = 1; std::getline(lines, line); ++number) {
     const auto first = line.find_first_not_of(" \t");
     if (first != std::string::npos && line.compare(first, 8, "#include") == 0) {
       const auto open = line.find('"', first);
       const auto close = open == std::string::npos ? open : line.find('"', open + 1);
-      if (close == std::string::npos) throw GlError(std::string(key) + ": malformed #include: " + line);
+      if (close == std::string::npos) throw GlError(std::string(key) + ":" + std::to_string(number) + ": malformed #include: " + line);
       const std::string target = line.substr(open + 1, close - open - 1);
       if (included.insert(target).second) {
-        out += "// begin " + target + "\n";
+        out.text += lineDirective(1, out.files.size());
         expandInto(target, included, stack, out);
-        out += "// end " + target + "\n";
       }
+      out.text += lineDirective(number + 1, source);
       continue;
     }
-    out += line;
-    out += '\n';
+    out.text += line;
+    out.text += '\n';
+    // #version must stay first; Program's defines go right after it, then this resets the count.
+    if (number == 1 && line.rfind("#version", 0) == 0) out.text += lineDirective(2, source);
   }
   stack.pop_back();
+}
+
+// A number at text[at...], advancing `at`; -1 if there is none.
+long readNumber(std::string_view text, std::size_t& at) {
+  const std::size_t begin = at;
+  while (at < text.size() && std::isdigit(static_cast<unsigned char>(text[at]))) ++at;
+  return at == begin ? -1 : std::stol(std::string(text.substr(begin, at - begin)));
+}
+
+// "file:line[:column]: message" for one log line in a known vendor format, or "".
+std::string describeLogLine(std::string_view line, const std::vector<std::string>& files) {
+  std::string severity;
+  for (const char* prefix : {"ERROR: ", "WARNING: "})
+    if (line.rfind(prefix, 0) == 0) {
+      severity = std::string(prefix).substr(0, std::string(prefix).size() - 2);
+      line.remove_prefix(severity.size() + 2);
+      for (char& c : severity) c = char(std::tolower(static_cast<unsigned char>(c)));
+    }
+  std::size_t at = 0;
+  const long source = readNumber(line, at);
+  if (source < 0 || std::size_t(source) >= files.size() || at >= line.size()) return {};
+  long number = -1, column = -1;
+  if (line[at] == ':') {  // Mesa "0:12(5): ", AMD "0:12: "
+    ++at;
+    number = readNumber(line, at);
+    if (at < line.size() && line[at] == '(') {
+      ++at;
+      column = readNumber(line, at);
+      if (at >= line.size() || line[at] != ')') return {};
+      ++at;
+    }
+  } else if (line[at] == '(') {  // NVIDIA "0(12) : "
+    ++at;
+    number = readNumber(line, at);
+    if (at >= line.size() || line[at] != ')') return {};
+    ++at;
+  }
+  while (at < line.size() && line[at] == ' ') ++at;
+  if (number < 0 || at >= line.size() || line[at] != ':') return {};
+  std::string_view message = line.substr(at + 1);
+  while (!message.empty() && message.front() == ' ') message.remove_prefix(1);
+  std::size_t file = std::size_t(source);
+  if (number >= kLinesPerFile) {  // the line number names the file (lineDirective)
+    file = std::size_t(number / kLinesPerFile);
+    number %= kLinesPerFile;
+    if (file >= files.size()) return {};
+  }
+  std::string out = files[file] + ":" + std::to_string(number);
+  if (column >= 0) out += ":" + std::to_string(column);
+  out += ": ";
+  if (!severity.empty()) out += severity + ": ";
+  return out + std::string(message);
 }
 
 }  // namespace
@@ -68,11 +133,27 @@ std::string_view embeddedShader(std::string_view key) {
   return it->second;
 }
 
-std::string expandShaderSource(std::string_view key) {
+ExpandedShader expandShader(std::string_view key) {
   std::set<std::string, std::less<>> included;
   std::vector<std::string> stack;
-  std::string out;
+  ExpandedShader out;
   expandInto(key, included, stack, out);
+  return out;
+}
+
+std::string expandShaderSource(std::string_view key) { return expandShader(key).text; }
+
+std::string describeShaderLog(std::string_view log, const std::vector<std::string>& files, std::string_view fallback) {
+  std::string out;
+  std::istringstream lines{std::string(log)};
+  std::string line;
+  while (std::getline(lines, line)) {
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\0')) line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    std::string described = describeLogLine(line, files);
+    if (described.empty()) described = std::string(fallback) + ": " + line;
+    out += (out.empty() ? "" : "\n") + described;
+  }
   return out;
 }
 

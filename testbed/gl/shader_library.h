@@ -14,8 +14,23 @@ struct ShaderRegistration {
 
 // The raw embedded text; throws GlError for an unknown key.
 std::string_view embeddedShader(std::string_view key);
-// The text with includes expanded. Throws GlError for a missing include or a cycle.
-std::string expandShaderSource(std::string_view key);
+// The text with includes expanded, and `#line <line> <file>` directives around each
+// included file (and after the #version line, where Program inserts its defines), so the
+// compiler counts every file's lines as its author does: the compiler's messages cite
+// source-string number i for files[i], files[0] being `key`. Throws GlError for a missing
+// include or a cycle.
+struct ExpandedShader {
+  std::string text;
+  std::vector<std::string> files;
+};
+ExpandedShader expandShader(std::string_view key);
+std::string expandShaderSource(std::string_view key);  // expandShader(key).text
+// A compiler's info log made readable: one line per message, its "source:line" position
+// (Mesa's "2:71(5): error: ...", NVIDIA's "2(71) : error ...", AMD's "ERROR: 2:71: ...")
+// rewritten as "file:71:5: error: ..." (the file from the line number, lines of file i
+// counting from i·100000, else files[source]); other lines kept, prefixed with
+// `fallback` ("techniques/pcf/pcf_visibility.frag: ..."); blank lines dropped.
+std::string describeShaderLog(std::string_view log, const std::vector<std::string>& files, std::string_view fallback);
 std::vector<std::string> embeddedShaderKeys();
 // The names that GLSL `source` declares `uniform` (comments skipped, preprocessor branches
 // all read; uniform blocks are not looked into: the library has none), sorted, unique.

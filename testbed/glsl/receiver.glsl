@@ -1,12 +1,10 @@
 // Shared by every technique's screen pass: the receiver at this pixel from the G-buffer,
 // its position in the light's shadow-map space, and the rule that receivers facing away
-// from the light are shadowed. Bound by bindReceiverInputs() (render/shadow_map_pass.h).
+// from the light are shadowed. Bound by bindReceiverInputs() (render/receiver_inputs.h).
+#include "testbed/glsl/light.glsl"
+
 uniform sampler2D uGPosition;  // xyz world position, w = coverage
 uniform sampler2D uGNormal;    // the triangle's unit normal, facing the camera
-uniform mat4 uLightViewProjection;
-uniform vec3 uLightPosition;
-uniform vec3 uLightDirection;  // the direction light travels
-uniform int uLightOrthographic;
 uniform float uFacingLimit;    // sin of the least incidence that counts as lit (scene/view.h)
 
 struct Receiver {
@@ -49,6 +47,6 @@ bool insideLightFrustum(vec3 light) {
 vec3 lightSpace(vec3 position) {
   vec4 clip = uLightViewProjection * vec4(position, 1.0);
   if (!(clip.w > 0.0)) return kOutsideLight;
-  vec3 light = clip.xyz / clip.w * 0.5 + 0.5;
+  vec3 light = lightCoordinatesOfClip(clip);
   return insideLightFrustum(light) ? light : kOutsideLight;
 }

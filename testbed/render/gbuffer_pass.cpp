@@ -1,5 +1,7 @@
 #include "testbed/render/gbuffer_pass.h"
 
+#include "testbed/render/uniform_check.h"
+
 namespace testbed {
 
 GBuffer::GBuffer(glm::ivec2 size)
@@ -32,6 +34,7 @@ void GBuffer::render(const GpuScene& geometry, const ViewProjection& camera) {
   glDisable(GL_POLYGON_OFFSET_FILL);
   program_.use();
   program_.set("uViewProjection", camera.viewProjection());
+  requireUniformsSet(program_);
   geometry.draw();
 }
 

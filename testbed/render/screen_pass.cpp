@@ -1,5 +1,7 @@
 #include "testbed/render/screen_pass.h"
 
+#include "testbed/render/uniform_check.h"
+
 namespace testbed {
 
 ScreenPass::ScreenPass() : empty_(VertexArray::create()) {}
@@ -15,6 +17,7 @@ void beginScreenDraw(const Program& program, const Framebuffer& target, glm::ive
 
 void ScreenPass::draw(const Program& program, const Framebuffer& target, glm::ivec2 size) const {
   beginScreenDraw(program, target, size);
+  requireUniformsSet(program);
   glBindVertexArray(empty_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "testbed/render/uniform_check.h"
 #include "testbed/scene/light_fit.h"
 #include "testbed/technique/technique.h"
 
@@ -62,6 +63,7 @@ void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
   program.use();
   program.set("uLightViewProjection", in.light.viewProjection());
   if (floatDepth) program.set("uConstantOffset", units * kDepthStep16);
+  requireUniformsSet(program);
   in.geometry.draw();
   glDisable(GL_POLYGON_OFFSET_FILL);
 }

@@ -11,7 +11,7 @@ void ShadowMapScreenBase::render(const FrameInputs& in, PassTimer& timer, const 
     auto scope = timer.scope(passName_);
     bindReceiverInputs(program_, in);
     bindShadowMap(program_, shadowMap_.depth());
-    setUniforms(program_);
+    setUniforms(program_, in);
     screen_.draw(program_, out.framebuffer, in.size);
   }
   afterTimedPasses(in, shadowMap_.depth());

@@ -24,7 +24,11 @@ class ShadowMapScreenBase : public ShadowTechnique {
   explicit ShadowMapScreenBase(std::string fragmentKey, std::string passName = "visibility")
       : fragmentKey_(std::move(fragmentKey)), passName_(std::move(passName)) {}
   void configureShadowMap(const ShadowMapPass::Parameters& parameters) { shadowMap_.configure(parameters); }
-  virtual void setUniforms(const Program& program) const = 0;
+  // The technique's own uniforms of the screen pass, set before each draw. `in` is the
+  // frame's (its light, camera, scene, sizes): what a technique needs per frame comes
+  // from here, so none copies render()'s body. The receiver's, the light's
+  // (glsl/light.glsl) and the shadow map's uniforms are already set.
+  virtual void setUniforms(const Program& program, const FrameInputs& in) const = 0;
   // Runs after the timed passes, outside any timer scope (debug views).
   virtual void afterTimedPasses(const FrameInputs&, const Texture& /*shadowMap*/) {}
 

@@ -113,14 +113,18 @@ TEST(Registry, SpecChecksNameWhatIsWrong) {
   EXPECT_EQ(techniqueProblem(info), "technique id 'a/b' must be letters, digits, '-' and '_'");
 }
 
-TEST(Registry, FindsSmAndNamesTheKnownIdsForAnUnknownOne) {
+TEST(Registry, FindsSmAndSuggestsTheClosestIdsAndPluginForAnUnknownOne) {
   EXPECT_EQ(findTechnique("sm").info->id, "sm");
+  // "pcss" is 2 edits from "pcf" (s→f, drop s), at least 3 from every other id.
+  EXPECT_EQ(closestTechniqueIds("pcss", 1), std::vector<std::string>{"pcf"});
+  EXPECT_EQ(closestTechniqueIds("smsr", 3).front(), "smsr");
   try {
-    findTechnique("no-such-technique");
+    findTechnique("pcss");
     FAIL() << "expected InputError";
   } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("--technique: unknown technique 'no-such-technique'"), std::string::npos);
-    EXPECT_NE(std::string(error.what()).find("sm"), std::string::npos);
+    const std::string what = error.what();
+    EXPECT_EQ(what.rfind("--technique: unknown technique 'pcss' (closest: pcf, ", 0), 0u) << what;
+    EXPECT_NE(what.find("needs --plugin PATH"), std::string::npos) << what;
   }
 }
 

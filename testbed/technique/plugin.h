@@ -26,8 +26,9 @@
 // derive from breaks plugins built against an older testbed: the loader refuses a plugin
 // built for another version instead of crashing in it.
 // 2: describe() and ParameterBinder replace info() and staticInfo(); 3: WithParameters
-// owns configure(), the registration takes the description and declares the parameters.
-#define TESTBED_PLUGIN_API_VERSION 3
+// owns configure(), the registration takes the description and declares the parameters;
+// 4: ShadowMapScreenTechnique::setUniforms takes the frame's inputs, glsl/light.glsl.
+#define TESTBED_PLUGIN_API_VERSION 4
 
 namespace testbed {
 

@@ -61,12 +61,42 @@ std::vector<RegisteredTechnique> registeredTechniques() {
   return all;
 }
 
+namespace {
+
+// The Levenshtein distance: single-character insertions, deletions and substitutions.
+std::size_t editDistance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+std::vector<std::string> closestTechniqueIds(std::string_view id, std::size_t count) {
+  std::vector<std::pair<std::size_t, std::string>> ranked;
+  for (const auto& [name, entry] : registry()) ranked.emplace_back(editDistance(id, name), name);
+  std::sort(ranked.begin(), ranked.end());
+  std::vector<std::string> closest;
+  for (std::size_t i = 0; i < std::min(count, ranked.size()); ++i) closest.push_back(ranked[i].second);
+  return closest;
+}
+
 const RegisteredTechnique& findTechnique(std::string_view id) {
   const auto it = registry().find(id);
   if (it != registry().end()) return it->second;
-  std::string known;
-  for (const auto& [name, entry] : registry()) known += (known.empty() ? "" : ", ") + name;
-  throw InputError("--technique: unknown technique '" + std::string(id) + "' (known: " + known + ")");
+  std::string closest;
+  for (const auto& name : closestTechniqueIds(id, 3)) closest += (closest.empty() ? "" : ", ") + name;
+  throw InputError("--technique: unknown technique '" + std::string(id) + "' (closest: " + closest +
+                   "; `testbed list` names them all); a technique from a plugin needs --plugin PATH");
 }
 
 namespace {

@@ -22,8 +22,10 @@ struct RegisteredTechnique {
 
 // All registered techniques, sorted by id.
 std::vector<RegisteredTechnique> registeredTechniques();
-// Throws InputError naming the known ids when `id` is unknown.
+// Throws InputError naming the closest known ids and --plugin when `id` is unknown.
 const RegisteredTechnique& findTechnique(std::string_view id);
+// The `count` registered ids nearest `id` by edit distance, nearest first (ties by id).
+std::vector<std::string> closestTechniqueIds(std::string_view id, std::size_t count);
 
 // The README's technique table, generated from the registry (tests/readme_test.cpp keeps
 // the README equal to it).

@@ -21,7 +21,7 @@ struct ExampleParameters {
 class ExampleShadowMap final : public ShadowMapScreenTechnique<ExampleParameters> {
  public:
   ExampleShadowMap() : ShadowMapScreenTechnique("tests/plugin_example/example_sm.frag") {}
-  void setUniforms(const Program& program) const override { program.set("uBias", parameters_.bias); }
+  void setUniforms(const Program& program, const FrameInputs&) const override { program.set("uBias", parameters_.bias); }
 };
 
 }  // namespace

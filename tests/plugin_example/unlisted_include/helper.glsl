@@ -1,0 +1,1 @@
+// Exists, but the fixture does not list it.
