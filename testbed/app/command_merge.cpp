@@ -175,7 +175,7 @@ CommandRunner addMergeCommand(CLI::App& app) {
     files.writeText("spec.json", first.spec.dump(2) + "\n");
     stageSweepReport(files, spec, plan, records,
                      {{"command", commandLine}, {"machine", machines}, {"backend", backends}, {"build", field(first, "build")}},
-                     figureImages);
+                     figureImages, !options->noPlot);
     files.commit();
     if (!options->noPlot) plotSweepTables(options->out, spec.name);
     std::cerr << "testbed: merged " << shards.size() << " shards, " << records.size() << " records, into " << options->out << "\n";

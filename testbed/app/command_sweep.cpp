@@ -260,7 +260,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
       stageSweepReport(files, spec, plan, records,
                        {{"command", commandLine}, {"machine", hostDescription()}, {"backend", backend},
                         {"build", manifest["build"]}},
-                       figureImages);
+                       figureImages, !options->noPlot);
     }
     files.commit();
     removeFinishedCells(out);  // records.json holds them now

@@ -116,7 +116,7 @@ std::string figureFileName(std::size_t cell, const char* extension) {
 }
 
 void stageSweepReport(OutputFiles& files, const SweepSpec& spec, const SweepPlan& plan, const std::vector<Record>& records,
-                      const SweepHeader& header, const std::map<std::size_t, FigureImages>& figureImages) {
+                      const SweepHeader& header, const std::map<std::size_t, FigureImages>& figureImages, bool plots) {
   std::map<std::string, std::map<std::size_t, Record>> byBackend;
   for (const auto& record : records) byBackend[record.backend][record.cell.value()] = record;
   if (byBackend.empty()) byBackend[""];  // an empty table still shows the paper's figures
@@ -153,7 +153,7 @@ void stageSweepReport(OutputFiles& files, const SweepSpec& spec, const SweepPlan
     while (!names.insert(name).second) name.append("-").append(std::to_string(truth));
     files.writeImage(name + ".png", figure.image);
   }
-  files.writeText("index.html", sweepHtml(spec.name, pageTables, plan.entries, records, {names.begin(), names.end()}));
+  files.writeText("index.html", sweepHtml(spec.name, pageTables, plan.entries, records, {names.begin(), names.end()}, plots));
 }
 
 void plotSweepTables(const fs::path& dir, const std::string& name) {

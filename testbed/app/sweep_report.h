@@ -32,10 +32,11 @@ SweepOverrides overridesFromJson(const nlohmann::json& overrides, const std::str
 using FigureImages = CellImages;  // a figure cell's visibility and shaded frame
 
 // Stages every backend's table (records of different backends never share a table) and
-// the close-up figure of the figure column's cells into `files`.
+// the close-up figure of the figure column's cells into `files`. `plots`: whether the
+// tables' plots will be drawn beside them (index.html names only files that will exist).
 void stageSweepReport(OutputFiles& files, const SweepSpec& spec, const SweepPlan& plan,
                       const std::vector<Record>& records, const SweepHeader& header,
-                      const std::map<std::size_t, FigureImages>& figureImages);
+                      const std::map<std::size_t, FigureImages>& figureImages, bool plots);
 
 // Runs scripts/sweep_plot.py on each committed <name>*.json table in `dir`. Throws
 // std::runtime_error when the script fails.

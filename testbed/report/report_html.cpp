@@ -312,7 +312,7 @@ nlohmann::json sweepRecordsTable(const std::vector<Record>& records) {
 
 std::string sweepHtml(const std::string& name, const std::vector<std::pair<std::string, nlohmann::json>>& tables,
                       const std::vector<std::vector<std::vector<std::size_t>>>& entries,
-                      const std::vector<Record>& records, const std::vector<std::string>& closeUps) {
+                      const std::vector<Record>& records, const std::vector<std::string>& closeUps, bool plots) {
   nlohmann::json sections = nlohmann::json::array();
   std::vector<std::string> notes;
   for (const auto& [stem, table] : tables) {
@@ -338,7 +338,7 @@ std::string sweepHtml(const std::string& name, const std::vector<std::pair<std::
                                   "Our figure" + (unit.empty() ? "" : " (" + unit + ")") +
                                       " beside the paper's; each entry links to its cell's record. " + stem + ".md holds the same table."},
                                  columns, rows));
-    sections.push_back(htmlFigure("Plot: " + stem, stem + ".svg", stem + ".png"));
+    if (plots) sections.push_back(htmlFigure("Plot: " + stem, stem + ".svg", stem + ".png"));
     const nlohmann::json header = table.value("header", nlohmann::json::object());
     for (const auto& [key, value] : header.items())
       if (value.is_string()) notes.push_back(key + ": " + value.get<std::string>());

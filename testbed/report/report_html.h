@@ -59,9 +59,10 @@ std::string sequenceHtml(const std::string& scene, const std::vector<nlohmann::j
 // A sweep's (or merge's) index.html. `tables`: file stem → the table as sweepTableJson
 // writes it (its plot is <stem>.svg beside); `entries[row][column]`: the cells a table entry
 // reads (SweepPlan::entries), each entry linking to its first cell's record; `records`: every
-// cell's record, one row each (#cell-N); `closeUps`: the close-up figures' file stems.
+// cell's record, one row each (#cell-N); `closeUps`: the close-up figures' file stems;
+// `plots`: whether the tables' plots are drawn (--no-plot leaves them, and the page, out).
 std::string sweepHtml(const std::string& name, const std::vector<std::pair<std::string, nlohmann::json>>& tables,
                       const std::vector<std::vector<std::vector<std::size_t>>>& entries,
-                      const std::vector<Record>& records, const std::vector<std::string>& closeUps);
+                      const std::vector<Record>& records, const std::vector<std::string>& closeUps, bool plots);
 
 }  // namespace testbed
