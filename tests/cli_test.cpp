@@ -542,4 +542,79 @@ TEST(CliCompare, RoutesParametersPerTechniqueAndRejectsUnknownOnes) {
   EXPECT_FALSE(fs::exists(tmp / "y"));
 }
 
+// compare --reference soft|both on a tiny frame. The soft grid's error maps are drawn
+// against the area-light reference, so `soft`'s grid.png is the very image `both` writes as
+// grid_soft.png, and it differs from the hard grid.png; every record says which reference
+// each of its metrics was measured against.
+std::vector<std::string> softCompareArgs(const fs::path& scene, const std::string& reference, const fs::path& out) {
+  return {"compare",      "--scene", scene.string(), "--techniques", "sm",        "--size",  "160x90",
+          "--shadow-map", "128",     "--area-samples", "8",         "--reference", reference, "--out", out.string()};
+}
+
+TEST(CliCompare, SoftAndBothReferencesDrawTheSoftGrid) {
+  TempDir tmp;
+  const RunResult soft = runTestbed(softCompareArgs(bundledScene("wall.json"), "soft", tmp / "soft"));
+  ASSERT_EQ(soft.exitCode, 0) << soft.describe();
+  const RunResult both = runTestbed(softCompareArgs(bundledScene("wall.json"), "both", tmp / "both"));
+  ASSERT_EQ(both.exitCode, 0) << both.describe();
+  EXPECT_TRUE(fs::exists(tmp / "soft" / "grid.png"));
+  EXPECT_FALSE(fs::exists(tmp / "soft" / "grid_soft.png")) << "soft alone has one grid";
+  EXPECT_TRUE(fs::exists(tmp / "soft" / "area.exr"));
+  for (const char* file : {"grid.png", "grid_soft.png", "area.exr"}) EXPECT_TRUE(fs::exists(tmp / "both" / file)) << file;
+
+  const testbed::ImageF softGrid = testbed::readImage(tmp / "soft" / "grid.png");
+  const testbed::ImageF bothSoftGrid = testbed::readImage(tmp / "both" / "grid_soft.png");
+  const testbed::ImageF bothHardGrid = testbed::readImage(tmp / "both" / "grid.png");
+  ASSERT_GT(softGrid.width, 480);
+  ASSERT_EQ(softGrid.width, bothSoftGrid.width);
+  ASSERT_EQ(softGrid.height, bothSoftGrid.height);
+  ASSERT_EQ(bothHardGrid.pixels.size(), bothSoftGrid.pixels.size());
+  // The row label holds each run's own timings; the images below it are the same. Where the
+  // images start is where one run's hard and soft grids (same labels) first differ.
+  auto rowsDiffer = [](const testbed::ImageF& a, const testbed::ImageF& b, int y) {
+    const std::size_t row = std::size_t(a.width) * a.channels;
+    return !std::equal(a.pixels.begin() + y * row, a.pixels.begin() + (y + 1) * row, b.pixels.begin() + y * row);
+  };
+  int imagesTop = 0;
+  while (imagesTop < softGrid.height && !rowsDiffer(bothHardGrid, bothSoftGrid, imagesTop)) ++imagesTop;
+  ASSERT_LT(imagesTop, softGrid.height) << "error maps against the shadow volumes differ from the soft ones";
+  for (int y = imagesTop; y < softGrid.height; ++y)
+    ASSERT_FALSE(rowsDiffer(softGrid, bothSoftGrid, y)) << "row " << y << ": soft's grid.png is both's grid_soft.png";
+
+  const json all = json::parse(readFile(tmp / "soft" / "metrics.json"));
+  ASSERT_EQ(all.size(), 3u);  // groundtruth, area, sm
+  EXPECT_EQ(all[1]["technique"], "area");
+  const json& sm = all[2];
+  ASSERT_EQ(sm["technique"], "sm");
+  for (const char* key : {"soft_rmse", "soft_penumbra_mae", "soft_outside_mae", "soft_umbra_leak"}) {
+    ASSERT_TRUE(sm["error"][key].is_number()) << key << ": " << sm.dump(2);
+    const double value = sm["error"][key].get<double>();
+    EXPECT_GE(value, 0.0) << key;
+    EXPECT_LE(value, 1.0) << key;
+    EXPECT_EQ(sm["error"]["reference"][key], "soft") << key;
+  }
+  // sm's hard edge against a radius-2 light: wrong inside the penumbra, not zero there.
+  EXPECT_GT(sm["error"]["soft_penumbra_mae"].get<double>(), 0.0);
+  EXPECT_EQ(sm["error"]["reference"]["rmse"], "hard");
+  EXPECT_EQ(sm["error"]["reference"]["mismatch_pct"], "hard");
+}
+
+// A light without a radius has no area-light reference: exit 2 with one line naming the scene
+// and light.radius, nothing written, for both soft references.
+TEST(CliCompare, SoftReferenceRefusesALightWithoutRadius) {
+  TempDir tmp;
+  json scene = json::parse(readFile(bundledScene("wall.json")));
+  scene["light"].erase("radius");
+  const fs::path file = writeFile(tmp / "point_light.json", scene.dump(2));
+  for (const char* reference : {"soft", "both"}) {
+    const fs::path out = tmp / (std::string("out_") + reference);
+    const RunResult run = runTestbed(softCompareArgs(file, reference, out));
+    EXPECT_EQ(run.exitCode, 2) << run.describe();
+    EXPECT_NE(run.err.find("light.radius"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("point_light.json"), std::string::npos) << run.err;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << "one line: " << run.err;
+    EXPECT_FALSE(fs::exists(out)) << reference;
+  }
+}
+
 }  // namespace

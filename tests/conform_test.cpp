@@ -1,7 +1,8 @@
 // `testbed conform` (docs/conformance.md): every in-tree technique passes every check (one
 // test each, so a regression names its technique), the plugins of tests/conform_plugins/
-// each fail on the line of the defect planted in them and pass the rest, and bad input
-// exits 2 before any check runs.
+// each fail on the line of the defect planted in them and pass the rest, the example plugins
+// of tests/plugin_example/ pass every check, and bad input exits 2
+// before any check runs.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -58,6 +59,32 @@ INSTANTIATE_TEST_SUITE_P(Techniques, ConformInTree, ::testing::ValuesIn(inTreeId
     if (c == '-') c = '_';
   return name;
 });
+
+// The example plugins of tests/plugin_example/ (the README's walk-through), loaded as users
+// load them: every check passes, as for an in-tree technique.
+struct ExamplePlugin {
+  const char* path;
+  std::string id;
+};
+
+class ConformExamplePlugin : public ::testing::TestWithParam<ExamplePlugin> {};
+
+TEST_P(ConformExamplePlugin, PassesEveryCheck) {
+  const RunResult run = runTestbed({"conform", "--plugin", GetParam().path, "--technique", GetParam().id});
+  EXPECT_EQ(run.exitCode, 0) << run.describe() << "\n" << run.out;
+  EXPECT_EQ(passedOrSkipped(run.out), kChecks) << run.out;
+  EXPECT_TRUE(linesStartingWith(run.out, "FAIL ").empty()) << run.out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Plugins, ConformExamplePlugin,
+                         ::testing::Values(ExamplePlugin{TESTBED_PLUGIN_EXAMPLE, "example-sm"},
+                                           ExamplePlugin{TESTBED_PLUGIN_PCSS, "pcss"}),
+                         [](const auto& info) {
+                           std::string name = info.param.id;
+                           for (char& c : name)
+                             if (c == '-') c = '_';
+                           return name;
+                         });
 
 // A plugin with one defect: exit 1, FAIL on exactly the `failing` checks, PASS on the rest.
 // A check this build skips (SKIP) is left out of `failing`.

@@ -23,6 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include "testbed/io/image_io.h"
+#include "testbed/metrics/metrics.h"
 #include "testbed/scene/animation.h"
 #include "testbed/technique/registry.h"
 #include "testbed/viewer/panel.h"
@@ -237,6 +238,31 @@ TEST_F(ViewerTest, ErrorModeAndMetricsAgreeWithCompare) {
   }
   ASSERT_GT(receivers, 0);
   EXPECT_NEAR(100.0 * mismatched / receivers, fromCompare["error"]["mismatch_pct"].get<double>(), 1e-9);
+}
+
+// soft-error mode is compare --reference soft's heat map: the same sm frame against the same
+// area-light reference (64 samples, compare's default with --reference soft), recomputed here
+// from compare's sm.exr and area.exr; one 8-bit step for the PNG's rounding.
+TEST_F(ViewerTest, SoftErrorModeIsTheHeatMapAgainstTheAreaReference) {
+  const fs::path heat = dir_ / "soft_heat.png";
+  const RunResult run = view(with({"--scene", scene("wall.json").string(), "--technique", "sm", "--script",
+                                   writeScript("mode soft-error\nscreenshot " + heat.string() + "\nquit\n").string()},
+                                  kCommon));
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  const fs::path out = dir_ / "compare_soft";
+  ASSERT_EQ(testbed(with({"compare", "--scene", scene("wall.json").string(), "--techniques", "sm", "--reference",
+                          "soft", "--out", out.string()},
+                         kCommon))
+                .exitCode,
+            0);
+  const testbed::ImageF expected =
+      testbed::softErrorHeatMap(testbed::readImage(out / "sm.exr"), testbed::readImage(out / "area.exr"));
+  const testbed::ImageF shown = testbed::readImage(heat);
+  EXPECT_LE(maxStepDifference(shown, expected), 1);
+  // Not the hard heat map: sm's edge is red/blue there, but tinted by |v - ref| here.
+  const testbed::ImageF hard = testbed::errorHeatMap(testbed::readImage(out / "sm.exr"),
+                                                     testbed::readImage(out / "groundtruth.exr"));
+  EXPECT_GT(maxStepDifference(shown, hard), 10);
 }
 
 // The window: the panel at the left, the 3D view beside it showing the screenshot's bytes.

@@ -31,15 +31,19 @@ const char* displayModeName(DisplayMode mode) {
     case DisplayMode::Shaded: return "shaded";
     case DisplayMode::Visibility: return "visibility";
     case DisplayMode::Error: return "error";
+    case DisplayMode::SoftError: return "soft-error";
     case DisplayMode::Debug: return "debug";
   }
   return "?";
 }
 
 DisplayMode parseDisplayMode(const std::string& name) {
-  for (DisplayMode m : {DisplayMode::Shaded, DisplayMode::Visibility, DisplayMode::Error, DisplayMode::Debug})
+  std::string names;
+  for (DisplayMode m : kDisplayModes) {
     if (name == displayModeName(m)) return m;
-  throw InputError("mode: expected shaded, visibility, error or debug, got '" + name + "'");
+    names += std::string(names.empty() ? "" : m == DisplayMode::Debug ? " or " : ", ") + displayModeName(m);
+  }
+  throw InputError("mode: expected " + names + ", got '" + name + "'");
 }
 
 LiveView::LiveView(Scene& scene, const RenderSettings& settings, std::string backend)
@@ -169,6 +173,20 @@ const ImageF& LiveView::groundTruth() {
   return *truth_;
 }
 
+// Rendered only when soft-error mode asks for it: dozens of shadow-volume passes.
+const ImageF& LiveView::areaReference() {
+  if (!(scene_.light.radius > 0))
+    throw std::invalid_argument("the light has no radius (light.radius), so there is no area-light reference");
+  if (!area_ || areaGeneration_ != generation_) {
+    const RegisteredTechnique& reference = areaLightReference();
+    TechniqueSession area(*runner_, reference, resolveParameters("area", reference.info->parameters, {}));
+    area.renderFrame();
+    area_ = area.visibility();
+    areaGeneration_ = generation_;
+  }
+  return *area_;
+}
+
 void LiveView::rebuildImage() {
   imageNote_.clear();
   try {
@@ -176,6 +194,7 @@ void LiveView::rebuildImage() {
       case DisplayMode::Shaded: image_ = runner_->shade(visibility_); return;
       case DisplayMode::Visibility: image_ = visibilityImage(visibility_); return;
       case DisplayMode::Error: image_ = errorHeatMap(visibility_, groundTruth()); return;
+      case DisplayMode::SoftError: image_ = softErrorHeatMap(visibility_, areaReference()); return;
       case DisplayMode::Debug:
         for (const auto& [name, debug] : debugImages_) {
           if (debugImage_.empty() || name == debugImage_) {

@@ -16,7 +16,10 @@
 
 namespace testbed::viewer {
 
-enum class DisplayMode { Shaded, Visibility, Error, Debug };
+// SoftError: the heat map against the area-light reference (`compare --reference soft`).
+enum class DisplayMode { Shaded, Visibility, Error, SoftError, Debug };
+inline constexpr DisplayMode kDisplayModes[] = {DisplayMode::Shaded, DisplayMode::Visibility, DisplayMode::Error,
+                                               DisplayMode::SoftError, DisplayMode::Debug};
 const char* displayModeName(DisplayMode mode);
 DisplayMode parseDisplayMode(const std::string& name);  // "shaded", ...; throws InputError
 
@@ -68,7 +71,8 @@ class LiveView {
   std::uint64_t framesRendered() const { return frames_; }
 
   // The displayed image (RGB, or one channel in visibility mode; top-down). In error mode
-  // it is the heat map against the shadow volumes; in debug mode the named debug image.
+  // it is the heat map against the shadow volumes, in soft-error mode against the area-light
+  // reference (its default samples); in debug mode the named debug image.
   const ImageF& image() const { return image_; }
   // Why the image is not what the mode asks for (no debug image, no receiver, ...); empty if it is.
   const std::string& imageNote() const { return imageNote_; }
@@ -98,6 +102,7 @@ class LiveView {
   void rebuildRunner();
   void startSession();
   const ImageF& groundTruth();
+  const ImageF& areaReference();
   void rebuildImage();
   void restartTemporal();
   void addToPlayback();
@@ -118,7 +123,8 @@ class LiveView {
   std::string debugImage_;
 
   std::optional<ImageF> truth_;
-  std::uint64_t truthGeneration_ = 0, generation_ = 1, frames_ = 0;
+  std::optional<ImageF> area_;
+  std::uint64_t truthGeneration_ = 0, areaGeneration_ = 0, generation_ = 1, frames_ = 0;
   std::deque<FrameSample> history_;
 
   int animationFrame_ = 0;

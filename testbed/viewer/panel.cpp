@@ -190,7 +190,7 @@ void Panel::displaySection(LiveView& view) {
   if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) return;
   int mode = int(view.mode());
   bool changed = false;
-  for (DisplayMode m : {DisplayMode::Shaded, DisplayMode::Visibility, DisplayMode::Error, DisplayMode::Debug}) {
+  for (DisplayMode m : kDisplayModes) {
     changed |= ImGui::RadioButton(displayModeName(m), &mode, int(m));
     if (m != DisplayMode::Debug) ImGui::SameLine();
   }
@@ -210,6 +210,8 @@ void Panel::displaySection(LiveView& view) {
   if (changed) view.setMode(DisplayMode(mode), debugName);
   if (view.mode() == DisplayMode::Error)
     ImGui::TextWrapped("red: lit but shadowed in the ground truth; blue: the reverse; tints: |v - gt|");
+  if (view.mode() == DisplayMode::SoftError)
+    ImGui::TextWrapped("against the area-light reference: red where brighter, blue where darker, by |v - ref|");
   if (!view.imageNote().empty()) ImGui::TextWrapped("note: %s", view.imageNote().c_str());
 }
 

@@ -9,6 +9,7 @@
 #include "testbed/core/error.h"
 #include "testbed/io/input_file.h"
 #include "testbed/technique/registry.h"
+#include "testbed/viewer/live_view.h"
 
 namespace testbed::viewer {
 namespace {
@@ -94,8 +95,7 @@ class Checker {
         if (!(a.numbers[0] > 0)) throw InputError("zoom: the factor must be > 0, got '" + what + "'");
         break;
       case ActionKind::Mode:
-        if (what != "shaded" && what != "visibility" && what != "error" && what != "debug")
-          throw InputError("mode: expected shaded, visibility, error or debug, got '" + what + "'");
+        parseDisplayMode(what);
         if (args.size() == 2 && what != "debug") throw InputError("mode: only debug takes an image name");
         if (args.size() == 2) a.detail = args[1];
         break;

@@ -16,7 +16,7 @@ enum class ActionKind {
   Pan,               // pan DX DY               camera in the image plane, pixels
   Zoom,              // zoom FACTOR             eye–target distance × FACTOR
   Light,             // light YAW PITCH         light around its target, degrees
-  Mode,              // mode shaded|visibility|error|debug [NAME]
+  Mode,              // mode shaded|visibility|error|soft-error|debug [NAME]
   ShadowMap,         // shadow-map N
   DepthFormat,       // depth-format 16|24|32f
   Frames,            // frames N                render N frames before the next action

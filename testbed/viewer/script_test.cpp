@@ -62,7 +62,7 @@ TEST(ViewerScript, BadLinesNameTheFileAndLine) {
   EXPECT_EQ(errorOf("orbit 1\n"), "s.txt:1: orbit: expected 2 argument(s), got 1");
   EXPECT_EQ(errorOf("orbit 1 nan\n"), "s.txt:1: expected two numbers: expected a finite number, got 'nan'");
   EXPECT_EQ(errorOf("zoom -2\n"), "s.txt:1: zoom: the factor must be > 0, got '-2'");
-  EXPECT_EQ(errorOf("mode glow\n"), "s.txt:1: mode: expected shaded, visibility, error or debug, got 'glow'");
+  EXPECT_EQ(errorOf("mode glow\n"), "s.txt:1: mode: expected shaded, visibility, error, soft-error or debug, got 'glow'");
   EXPECT_EQ(errorOf("frames 0\n"), "s.txt:1: frames: expected an integer in 1..100000, got '0'");
   EXPECT_EQ(errorOf("shadow-map 99999999\n"), "s.txt:1: shadow-map: expected an integer in 1..16384, got '99999999'");
   EXPECT_EQ(errorOf("screenshot a.jpg\n"), "s.txt:1: screenshot: a.jpg: the file must end in .png or .exr");
