@@ -282,6 +282,7 @@ void checkBuilt(GLuint object, GLenum status, PFNGLGETSHADERIVPROC getiv, PFNGLG
 
 // Compiles one stage and appends its full source to `sources` (for declaredUniforms).
 GLuint compileStage(GLenum stage, std::string_view key, std::string_view defines, std::string& sources) {
+  const char* extension = stage == GL_VERTEX_SHADER ? "vert" : stage == GL_FRAGMENT_SHADER ? "frag" : "comp";
   ExpandedShader expanded = expandShader(key);
   std::string& source = expanded.text;
   // The defines go right after the #version line, which must stay first.
@@ -290,6 +291,7 @@ GLuint compileStage(GLenum stage, std::string_view key, std::string_view defines
     throw GlError(std::string(key) + ": shader must start with #version");
   source.insert(versionEnd + 1, std::string(defines));
   sources += source;
+  dumpFinalShader(key, extension, source);
   const char* text = source.c_str();
   GLuint shader = glCreateShader(stage);
   glShaderSource(shader, 1, &text, nullptr);

@@ -2,9 +2,15 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
+#include <unistd.h>
 
 #include "testbed/core/error.h"
 
@@ -203,6 +209,30 @@ std::vector<std::string> embeddedShaderKeys() {
   std::vector<std::string> keys;
   for (const auto& [key, source] : library()) keys.push_back(key);
   return keys;
+}
+
+void dumpFinalShader(std::string_view key, std::string_view stage, std::string_view source) {
+  const char* folder = std::getenv("TESTBED_SHADER_DUMP");
+  if (!folder || !*folder) return;
+  std::uint64_t hash = 0xcbf29ce484222325ull;  // FNV-1a, 64 bits: stable across builds
+  for (const char c : source) hash = (hash ^ static_cast<unsigned char>(c)) * 0x100000001b3ull;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+  std::string name(key);
+  for (char& c : name)
+    if (c == '/') c = '_';
+  const std::filesystem::path target = std::filesystem::path(folder) / (name + "." + hex + "." + std::string(stage));
+  if (std::filesystem::exists(target)) return;
+  std::filesystem::path staging = target;
+  staging += ".tmp" + std::to_string(::getpid());
+  {
+    std::ofstream out(staging, std::ios::binary);
+    out.write(source.data(), std::streamsize(source.size()));
+    if (!out) throw GlError("TESTBED_SHADER_DUMP: cannot write " + staging.string());
+  }
+  std::error_code error;
+  std::filesystem::rename(staging, target, error);
+  if (error) throw GlError("TESTBED_SHADER_DUMP: cannot write " + target.string() + ": " + error.message());
 }
 
 }  // namespace testbed

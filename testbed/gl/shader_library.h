@@ -39,4 +39,14 @@ std::vector<std::string> declaredUniforms(std::string_view source);
 // stays). Plugins are checked with it, so a plugin cannot silently shadow or lose a shader.
 std::vector<std::string> takeShaderConflicts();
 
+// Where the environment variable TESTBED_SHADER_DUMP names a folder, writes `source` (a
+// stage's final text, as handed to the GL: includes expanded, #line directives and defines
+// in) there as "<key, '/' → '_'>.<16 hex digits of its FNV-1a hash>.<stage>", `stage` being
+// "vert", "frag" or "comp" — the extension glslangValidator picks the stage by. Equal
+// sources land on one file, so every variant a run builds is there once
+// (tests/glslang_portability_test.py feeds them to Khronos' reference compiler). Written
+// to a temporary name and renamed, so processes dumping at once never see half a file.
+// Does nothing when the variable is unset or empty; throws GlError if the write fails.
+void dumpFinalShader(std::string_view key, std::string_view stage, std::string_view source);
+
 }  // namespace testbed
