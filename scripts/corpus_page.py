@@ -168,7 +168,7 @@ def main(argv):
                                              ("command.txt", "command.txt")] if os.path.exists(os.path.join(folder, h))]})
     # Run again (after new statistics), it replaces what it added before.
     before = data.pop("corpus_page", {"notes": 0, "sections": 0})
-    data["title"] = data.get("title", "").replace(": sweep", ": corpus")
+    data["title"] = f"Corpus: {len(manifest.get('scenes', []))} scenes, seed {manifest.get('seed')}"
     data["notes"] = notes + data.get("notes", [])[before["notes"]:]
     data["sections"] = added + data.get("sections", [])[before["sections"]:]
     data["corpus_page"] = {"notes": len(notes), "sections": len(added)}

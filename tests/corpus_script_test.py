@@ -78,6 +78,13 @@ class CorpusScript(unittest.TestCase):
             if section["type"] == "figure":
                 self.assertTrue(os.path.isfile(os.path.join(self.run_dir, section["src"])), section["src"])
 
+    def test_the_page_script_run_again_replaces_what_it_added(self):
+        copy = os.path.join(OUT, "page-again")
+        shutil.copytree(self.run_dir, copy)
+        subprocess.run(["/usr/bin/python3", os.path.join(REPO, "scripts", "corpus_page.py"), copy], check=True,
+                       capture_output=True)
+        self.assertEqual(page_data(copy), page_data(self.run_dir))
+
     def test_committed_files_name_no_machine_folder(self):
         for name in ("spec.json", "corpus.md", "corpus.json", "sweep.json", "command.txt", "stats/stats.md",
                      "cost/cost.md"):
