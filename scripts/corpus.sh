@@ -1,19 +1,28 @@
 #!/usr/bin/env bash
-# A generated corpus measured end to end (docs/corpus.md): `testbed corpus` samples the
-# scenes from a seed, `testbed compare` runs every technique on each at 640x360 with a
-# 1024² shadow map, and scripts/corpus_stats.py writes the statistics across scenes.
+# A generated corpus measured end to end in one command (docs/corpus.md): `testbed corpus`
+# samples the scenes from a seed, one `testbed sweep` (spec: scripts/corpus_sweep.json,
+# scenes axis = the corpus folder) runs every technique on every scene at 640x360 for each
+# shadow-map size, then scripts/corpus_stats.py (statistics across scenes at one map size),
+# scripts/corpus_cost.py (equal-cost view over the sizes) and scripts/corpus_page.py (adds
+# both to the sweep's index.html).
 # Writes, replacing it whole at the end:
-#   OUT/scenes/   the scene files and manifest.json (what was sampled)
-#   OUT/runs/S/   per scene: metrics.json and report.md of compare
-#   OUT/          stats.md, stats.json, one box plot per metric, command.txt
-# Usage: scripts/corpus.sh [--seed S] [--count N] [--out DIR] [--techniques LIST]
-#                          [--area-samples N]   (extra compare options after --)
+#   OUT/scenes/    the scene files and manifest.json (what was sampled)
+#   OUT/           the sweep's files: index.html, records.json, corpus.md/.json, spec.json,
+#                  sweep.json, the close-up figure; command.txt (command, time, commit)
+#   OUT/stats/     stats.md, stats.json, one box plot per metric (map size --stats-map)
+#   OUT/stats-all-maps/  the same over every technique @ map size, against sm at the largest
+#   OUT/cost/      cost.md, cost.json, cost-<cost>.png, scenes/<scene>.png
+# An interrupted run leaves OUT.partial/; the same command again resumes it (the sweep
+# skips the cells whose records exist, docs/paper-runs.md "Resuming").
+# Usage: scripts/corpus.sh [--seed S] [--count N] [--out DIR] [--techniques all|LIST]
+#                          [--shadow-maps 512,1024,2048] [--stats-map 1024]
+#                          [-- extra sweep options, e.g. --repeat 3]
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-testbed="${TESTBED_BUILD_DIR:-$repo/build}/testbed/app/testbed"
+testbed="${TESTBED:-${TESTBED_BUILD_DIR:-$repo/build}/testbed/app/testbed}"  # $TESTBED: the binary itself
 python=/usr/bin/python3
 [ -x "$python" ] || python=python3
-seed=2026 count=40 out="$repo/results/corpus" techniques=all area_samples=0
+seed=2026 count=40 out="$repo/results/corpus" techniques=all maps=512,1024,2048 stats_map=1024
 extra=()
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -21,37 +30,73 @@ while [ $# -gt 0 ]; do
     --count) count="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
     --techniques) techniques="$2"; shift 2 ;;
-    --area-samples) area_samples="$2"; shift 2 ;;
+    --shadow-maps) maps="$2"; shift 2 ;;
+    --stats-map) stats_map="$2"; shift 2 ;;
     --) shift; extra=("$@"); break ;;
     *) echo "corpus.sh: unknown option '$1' (see the header of $0)" >&2; exit 2 ;;
   esac
 done
 [ -x "$testbed" ] || { echo "corpus.sh: $testbed not built (run scripts/setup.sh)" >&2; exit 2; }
+testbed="$(cd "$(dirname "$testbed")" && pwd)/$(basename "$testbed")"  # the sweep runs in the work folder
+case ",$maps," in *",$stats_map,"*) ;; *) echo "corpus.sh: --stats-map $stats_map is not one of --shadow-maps $maps" >&2; exit 2 ;; esac
+[ "$techniques" = all ] && techniques="$("$testbed" list --json | "$python" -c 'import json,sys; print(",".join(t["id"] for t in json.load(sys.stdin)))')"
 
-work="$(mktemp -d "${TMPDIR:-/tmp}/corpus.XXXXXX")"
-trap 'rm -rf "$work"' EXIT
-"$testbed" corpus --seed "$seed" --count "$count" --out "$work/new/scenes"
+# The work folder is kept when the run fails, so the same command resumes it; other
+# arguments start it afresh.
+out="$(mkdir -p "$(dirname "$out")" && cd "$(dirname "$out")" && pwd)/$(basename "$out")"
+work="$out.partial"
+arguments="$seed $count $techniques $maps $stats_map ${extra[*]}"
+if [ -e "$work" ] && [ "$(cat "$work/arguments" 2>/dev/null)" != "$arguments" ]; then rm -rf "$work"; fi
+mkdir -p "$work"
+echo "$arguments" > "$work/arguments"
+if [ ! -f "$work/scenes/manifest.json" ]; then
+  "$testbed" corpus --seed "$seed" --count "$count" --out "$work/scenes" || { status=$?; rm -rf "$work"; exit $status; }
+fi
+"$python" - "$repo/scripts/corpus_sweep.json" "$work/corpus.json" "$techniques" "$maps" <<'PY'
+import json, sys
+template, target, techniques, maps = sys.argv[1:]
+spec = json.load(open(template))
+spec["techniques"] = techniques.split(",")
+spec["axes"]["shadow_map"] = [int(m) for m in maps.split(",")]
+json.dump(spec, open(target, "w"), indent=1)
+PY
+
 start=$(date +%s)
-for scene in "$work"/new/scenes/*.json; do
-  name="$(basename "$scene" .json)"
-  [ "$name" = manifest ] && continue
-  echo "== $name" >&2
-  "$testbed" compare --scene "$scene" --size 640x360 --shadow-map 1024 --techniques "$techniques" \
-    --area-samples "$area_samples" --out "$work/full/$name" "${extra[@]}"
-  mkdir -p "$work/new/runs/$name"
-  cp "$work/full/$name/"{metrics.json,report.md} "$work/new/runs/$name/"
-  rm -rf "$work/full/$name"
-done
+# Relative paths: the sweep's command line and tables name no machine's folder.
+(cd "$work" && "$testbed" sweep --spec corpus.json --no-plot --out sweep "${extra[@]}")
 seconds=$(( $(date +%s) - start ))
-"$python" "$repo/scripts/corpus_stats.py" "$work/new/runs" --out "$work/new"
+"$python" "$repo/scripts/corpus_stats.py" "$work/sweep/records.json" --out "$work/sweep/stats" \
+  --shadow-map "$stats_map" --baseline sm
+# Every configuration (technique @ map size) against sm at the largest map: is smsr at 1024²
+# better than sm at 2048²?
+largest="$(tr ',' '\n' <<< "$maps" | sort -n | tail -1)"
+if [ "$maps" != "$stats_map" ]; then
+  "$python" "$repo/scripts/corpus_stats.py" "$work/sweep/records.json" --out "$work/sweep/stats-all-maps" \
+    --baseline "sm @$largest"
+fi
+"$python" "$repo/scripts/corpus_cost.py" "$work/sweep/records.json" --out "$work/sweep/cost"
+mv "$work/scenes" "$work/sweep/scenes"
+# spec.json lists each scene's absolute path (the shards' identity); the committed folder
+# names them relative to itself.
+"$python" - "$work/sweep/spec.json" "$work/sweep" <<'PY'
+import json, os, sys
+path, folder = sys.argv[1:]
+spec = json.load(open(path))
+scenes = spec.get("scenes")
+if isinstance(scenes, dict):
+    spec["scenes"] = {k: "scenes/" + os.path.basename(v) for k, v in scenes.items()}
+json.dump(spec, open(path, "w"), indent=1, sort_keys=True)
+open(path, "a").write("\n")
+PY
 {
-  echo "scripts/corpus.sh --seed $seed --count $count --techniques $techniques --area-samples $area_samples ${extra[*]}"
-  echo "compare: 640x360, shadow map 1024, $count scenes in ${seconds} s on $(nproc) cores, $(date -u +%Y-%m-%d)"
+  echo "scripts/corpus.sh --seed $seed --count $count --techniques $techniques --shadow-maps $maps --stats-map $stats_map ${extra[*]}"
+  echo "sweep: 640x360, shadow maps $maps, $count scenes in ${seconds} s on $(nproc) cores, $(date -u +%Y-%m-%d)"
   echo "testbed: $(git -C "$repo" rev-parse --short HEAD 2>/dev/null || echo unknown)"
-} > "$work/new/command.txt"
+} > "$work/sweep/command.txt"
+"$python" "$repo/scripts/corpus_page.py" "$work/sweep"
 
-# Replace OUT whole: the new tree in place, then the old one removed.
-mkdir -p "$(dirname "$out")"
+# Replace OUT whole: the new tree in place, then the old one and the work folder removed.
 if [ -e "$out" ]; then mv "$out" "$work/old"; fi
-mv "$work/new" "$out"
-echo "corpus.sh: wrote $out (stats.md: the tables)" >&2
+mv "$work/sweep" "$out"
+rm -rf "$work"
+echo "corpus.sh: wrote $out (index.html; stats/stats.md and cost/cost.md: the tables)" >&2

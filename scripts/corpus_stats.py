@@ -245,10 +245,16 @@ def main(argv):
     parser.add_argument("records", nargs="+", help="metrics.json / records.json files, or folders holding them")
     parser.add_argument("--out", required=True, help="folder for stats.md, stats.json and the plots")
     parser.add_argument("--baseline", default="sm", help="technique label compared against (default: sm)")
+    parser.add_argument("--shadow-map", type=int, help="only the records of this shadow-map size")
     parser.add_argument("--no-plot", action="store_true", help="skip the plots")
     args = parser.parse_args(argv)
     try:
-        table, flagged, notes = organise(load_records(args.records))
+        records = load_records(args.records)
+        if args.shadow_map is not None:
+            records = [r for r in records if r.get("shadow_map") == args.shadow_map]
+            if not records:
+                raise InputError(f"--shadow-map: no records of shadow map {args.shadow_map}")
+        table, flagged, notes = organise(records)
         if not table:
             raise InputError("no technique records with an error block (besides the references)")
         if args.baseline not in table:
@@ -263,7 +269,7 @@ def main(argv):
     with open(os.path.join(args.out, "stats.md"), "w", encoding="utf-8") as handle:
         handle.write(markdown(results, args.baseline, flagged, notes) + "\n")
     with open(os.path.join(args.out, "stats.json"), "w", encoding="utf-8") as handle:
-        json.dump({"baseline": args.baseline, "excluded": flagged, "notes": notes, "metrics": results}, handle,
+        json.dump({"baseline": args.baseline, "shadow_map": args.shadow_map, "excluded": flagged, "notes": notes, "metrics": results}, handle,
                   indent=1, sort_keys=True)
         handle.write("\n")
     if not args.no_plot:

@@ -3,9 +3,11 @@
 # technique on every bundled scene at each shadow-map size given (default 512 and 1024),
 # keeping what people read (report.md, grid.png, speed_vs_error.svg, metrics.json) and an
 # index, results/README.md, with every table. Extra arguments go to `testbed compare`.
+# $TESTBED_BUILD_DIR names a build made already (setup.sh, which builds every target, is
+# then skipped).
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-"$repo/scripts/setup.sh"
+[ -n "${TESTBED_BUILD_DIR:-}" ] || "$repo/scripts/setup.sh"
 testbed="${TESTBED_BUILD_DIR:-$repo/build}/testbed/app/testbed"
 sizes=(${TESTBED_RESULT_SIZES:-512 1024})
 work="$(mktemp -d)"

@@ -52,11 +52,15 @@ def main_page(folder, names):
     return markdown[0] if markdown else sorted(names)[0]
 
 
-def run_entry(folder, names):
+def run_entry(folder, names, by_folder):
     relative = os.path.relpath(folder, "results")
     page = main_page(folder, names)
     links = [f'<a href="{html.escape(relative)}/{html.escape(page)}"><b>{html.escape(relative)}</b></a>']
     shown = sorted(n for n in names if n.endswith(SHOWN) and n != page and not n.endswith("_error_over_time.png"))
+    # A run's own subfolders with a table (a corpus's stats/ and cost/), but not its scenes.
+    shown += sorted(os.path.relpath(os.path.join(sub, main_page(sub, by_folder[sub])), folder) for sub in by_folder
+                    if os.path.dirname(sub) == folder and os.path.basename(sub) != "scenes"
+                    and main_page(sub, by_folder[sub]).endswith((".md", ".html")))
     links += [f'<a href="{html.escape(relative)}/{html.escape(n)}">{html.escape(n)}</a>' for n in shown]
     videos = sum(n.endswith(".mp4") for n in names)
     if videos:
@@ -75,13 +79,13 @@ def page(files):
         if not runs:
             continue
         body.append(f"<h2>{html.escape(title)}</h2>\n<p class=\"note\">Made by <code>{script}</code>.</p>\n<ul>")
-        body += [run_entry(f, by_folder[f]) for f in runs]
+        body += [run_entry(f, by_folder[f], by_folder) for f in runs]
         body.append("</ul>")
     # Folders inside a listed run (a corpus's runs/, its scenes/) belong to it.
     others = sorted(f for f in by_folder if not any(f == p or f.startswith(p + "/") for p in placed))
     if others:
         body.append("<h2>Other</h2>\n<ul>")
-        body += [run_entry(f, by_folder[f]) for f in others]
+        body += [run_entry(f, by_folder[f], by_folder) for f in others]
         body.append("</ul>")
     with open(STYLE) as f:
         style = f.read()

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Every run's index.html in a real browser (Debian's Chromium, headless, driven by
 python3-selenium and chromium-driver; started and stopped here): a tiny compare, a tiny
-compare --frames and a tiny sweep each write one, opened over file:// it logs no console
+compare --frames, a tiny sweep and a tiny scripts/corpus.sh each write one, opened over file:// it logs no console
 error, asks for nothing but file: and data: URLs, and its screenshots are not blank; on
 compare's page a key press flips the viewer between the technique and the reference.
 
@@ -65,6 +65,7 @@ class HtmlReports(unittest.TestCase):
             "compare": os.path.join(OUT, "compare"),
             "sequence": os.path.join(OUT, "sequence"),
             "sweep": os.path.join(OUT, "sweep"),
+            "corpus": os.path.join(OUT, "corpus"),
         }
         testbed("compare", "--scene", os.path.join(REPO, "scenes", "bunny.json"), "--techniques", "sm,pcf",
                 "--size", "320x180", "--shadow-map", "256", "--out", cls.runs["compare"])
@@ -73,6 +74,12 @@ class HtmlReports(unittest.TestCase):
                 "--out", cls.runs["sequence"])
         testbed("sweep", "--spec", os.path.join(HERE, "data", "sweep_tiny.json"),
                 "--out", cls.runs["sweep"])
+        corpus = subprocess.run([os.path.join(REPO, "scripts", "corpus.sh"), "--seed", "7", "--count", "2",
+                                 "--techniques", "sm,pcf", "--shadow-maps", "128,256", "--stats-map", "256",
+                                 "--out", cls.runs["corpus"]], capture_output=True, text=True,
+                                env={**os.environ, "TESTBED": TESTBED}, stdin=subprocess.DEVNULL)
+        if corpus.returncode != 0:
+            raise AssertionError(f"scripts/corpus.sh failed ({corpus.returncode}):\n{corpus.stderr}")
         cls.browser = start_chromium()
 
     @classmethod
@@ -129,6 +136,17 @@ class HtmlReports(unittest.TestCase):
         for link in links:
             target = link.get_attribute("href").split("#")[1]
             self.assertEqual(len(self.browser.find_elements(By.ID, target)), 1, target)
+
+    def test_corpus_tables_link_to_their_cells(self):
+        self.open("corpus", VIEWPORTS[0])
+        links = self.browser.find_elements(By.CSS_SELECTOR, "table.records a[href^='#cell-']")
+        # The per-scene table (2 scenes x 2 techniques) and the sweep's table (2 rows x 4 columns).
+        self.assertEqual(len(links), 2 * 2 + 2 * 4)
+        for link in links:
+            target = link.get_attribute("href").split("#")[1]
+            self.assertEqual(len(self.browser.find_elements(By.ID, target)), 1, target)
+        self.assertTrue(self.browser.find_elements(By.CSS_SELECTOR, "img[src^='stats/']"), "no box plots")
+        self.assertTrue(self.browser.find_elements(By.CSS_SELECTOR, "img[src^='cost/']"), "no Pareto plots")
 
     def pane_pixels(self):
         return self.browser.execute_script(

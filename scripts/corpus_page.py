@@ -1,0 +1,186 @@
+#!/usr/bin/python3
+"""Adds a corpus run's statistics and equal-cost view to its sweep's index.html
+(docs/corpus.md "What results/corpus shows"): the page's data (the JSON that
+testbed/report/html/report.js renders) gains, before the sweep's own sections, the
+statistics across scenes (stats/stats.json) as tables with their box plots, a table of
+every scene's error per technique whose entries link to the cell's record (#cell-N), the
+equal-cost tables (cost/cost.json) with their Pareto plots, and links to the files. Run
+again on the same folder, it replaces what it added.
+
+usage: scripts/corpus_page.py DIR   (DIR: what scripts/corpus.sh writes; index.html is
+       rewritten in place)"""
+import html
+import json
+import math
+import os
+import re
+import sys
+
+DATA = re.compile(r'(<script type="application/json" id="page-data">)(.*?)(</script>)', re.S)
+SHOWN_METRICS = ["mismatch_pct", "edge_mismatch_pct", "rmse", "boundary_mean_px", "boundary_p95_px", "leak_pct",
+                 "overestimation_pct", "soft_rmse"]
+
+
+class InputError(Exception):
+    pass
+
+
+def cell(text, value=None, href=""):
+    c = {"t": text}
+    if value is not None and isinstance(value, (int, float)) and math.isfinite(value):
+        c["v"] = value
+    if href:
+        c["href"] = href
+    return c
+
+
+def table(title, notes, columns, rows):
+    return {"type": "table", "title": title, "notes": notes,
+            "columns": [{"heading": h, "numeric": n} for h, n in columns], "rows": rows}
+
+
+def number(value, digits=4):
+    return "–" if value is None else f"{value:.{digits}g}"
+
+
+def read_json(path):
+    try:
+        with open(path, encoding="utf-8") as f:
+            return json.load(f)
+    except (OSError, ValueError) as error:
+        raise InputError(f"{path}: {error}") from error
+
+
+def stats_sections(folder, stats):
+    sections = []
+    excluded = stats.get("excluded", {})
+    for metric in SHOWN_METRICS:
+        per_label = stats["metrics"].get(metric)
+        if not per_label:
+            continue
+        rows = []
+        for label, entry in per_label.items():
+            s, v = entry["summary"], entry.get("vs_baseline") or {}
+            ci = s.get("mean_ci95")
+            rows.append({"cells": [
+                cell(label), cell(str(s["n"]), s["n"]), cell(number(s["median"]), s["median"]),
+                cell(f"{number(s['q1'])}–{number(s['q3'])}", s["q3"] - s["q1"]), cell(number(s["mean"]), s["mean"]),
+                cell("–" if ci is None else f"[{number(ci[0])}, {number(ci[1])}]", None if ci is None else ci[0]),
+                cell(number(v.get("median_ratio"), 3), v.get("median_ratio")),
+                cell("–" if "win_rate" not in v else f"{100 * v['win_rate']:.0f} %", v.get("win_rate")),
+                cell(number(v.get("wilcoxon_p"), 3), v.get("wilcoxon_p"))]})
+        notes = [f"Over the scenes (N per row; {len(excluded)} excluded: their ground truth cannot rank techniques). "
+                 f"Paired with the baseline {stats['baseline']} scene by scene: the median ratio technique / "
+                 "baseline, the win rate (a tie counts half) and the two-sided Wilcoxon signed-rank p. CI: bootstrap "
+                 "(BCa) 95 % interval of the mean. stats/stats.md holds every table."]
+        sections.append(table(f"Across scenes: {metric}", notes,
+                              [("technique", False), ("N", True), ("median", True), ("IQR", True), ("mean", True),
+                               ("mean 95 % CI", True), ("ratio to " + stats["baseline"], True), ("win rate", True),
+                               ("Wilcoxon p", True)], rows))
+        if os.path.isfile(os.path.join(folder, "stats", metric + ".png")):
+            sections.append({"type": "figure", "title": f"{metric} per scene (box: quartiles; points: scenes)",
+                             "src": f"stats/{metric}.png", "href": f"stats/{metric}.png"})
+    return sections
+
+
+def scenes_section(records, stats, metric="mismatch_pct"):
+    """Every scene's error per technique at the statistics' map size, each entry linking to
+    its cell's record on this page."""
+    per_label = stats["metrics"].get(metric, {})
+    labels = list(per_label)
+    size = stats.get("shadow_map")
+    cells = {}
+    for r in records:
+        if isinstance(r.get("cell"), int) and (size is None or r.get("shadow_map") == size):
+            label = r.get("row") or r.get("technique")
+            cells[(label, r.get("scene"))] = r["cell"]
+    scenes = sorted({s for entry in per_label.values() for s in entry["scenes"]})
+    rows = []
+    for scene in scenes:
+        row = [cell(scene, href=f"scenes/{scene}.json")]
+        for label in labels:
+            value = per_label[label]["scenes"].get(scene)
+            link = f"#cell-{cells[(label, scene)]}" if (label, scene) in cells else ""
+            row.append(cell(number(value, 3), value, link))
+        rows.append({"cells": row})
+    where = f" at shadow map {size}²" if size else ""
+    return table(f"Every scene: {metric}{where}",
+                 ["One row per scene (its name links to the scene file); each entry links to its cell's record "
+                  "below. Flagged scenes are left out."],
+                 [("scene", False)] + [(label, True) for label in labels], rows)
+
+
+def cost_sections(cost):
+    sections = []
+    titles = {"frame_ms": "frame time, ms", "memory_mb": "memory, MB", "invocations_k": "shader invocations, thousands"}
+    for name, rows in cost.get("tables", {}).items():
+        body = [{"cells": [cell(r["budget"]), cell(str(r["n"]), r["n"]), cell(number(r["budget_cost"]), r["budget_cost"]),
+                           cell(number(r["budget_error"]), r["budget_error"]), cell(r["best"]),
+                           cell(number(r["best_cost"]), r["best_cost"]), cell(number(r["best_error"]), r["best_error"]),
+                           cell(r["scene_winner"] or "–"),
+                           cell("–" if r["scene_winner_share"] is None else f"{100 * r['scene_winner_share']:.0f} %",
+                                r["scene_winner_share"])]} for r in rows]
+        sections.append(table(
+            f"At equal cost ({titles.get(name, name)})",
+            [f"Error: {cost['error']}, over {cost['scenes']} scenes. For each configuration as the budget: the one "
+             "with the least median error at no more median cost, and the one that wins most often scene by scene. "
+             "cost/cost.md holds the same tables; cost/scenes/ the plot of every scene."],
+            [("budget", False), ("N", True), ("its cost", True), ("its error", True), ("least error at no more cost", False),
+             ("cost", True), ("error", True), ("wins most scenes", False), ("share", True)], body))
+        sections.append({"type": "figure", "title": f"Error against {titles.get(name, name)}: each technique's Pareto front",
+                         "src": f"cost/cost-{name}.png", "href": f"cost/cost-{name}.png"})
+    return sections
+
+
+def main(argv):
+    if len(argv) != 2:
+        print(__doc__, file=sys.stderr)
+        return 2
+    folder = argv[1]
+    page_path = os.path.join(folder, "index.html")
+    try:
+        with open(page_path, encoding="utf-8") as f:
+            page = f.read()
+        match = DATA.search(page)
+        if not match:
+            raise InputError(f"{page_path}: no page-data script (not a testbed report page)")
+        data = json.loads(match.group(2).replace("<\\/", "</"))
+        stats = read_json(os.path.join(folder, "stats", "stats.json"))
+        cost = read_json(os.path.join(folder, "cost", "cost.json"))
+        records = read_json(os.path.join(folder, "records.json"))
+    except (InputError, ValueError) as error:
+        print(f"corpus_page: {error}", file=sys.stderr)
+        return 2
+    manifest = read_json(os.path.join(folder, "scenes", "manifest.json"))
+    notes = []
+    if os.path.isfile(os.path.join(folder, "command.txt")):
+        with open(os.path.join(folder, "command.txt"), encoding="utf-8") as f:
+            notes += [line.strip() for line in f if line.strip()]
+    notes.append(f"Corpus: {len(manifest.get('scenes', []))} scenes, seed {manifest.get('seed')} (scenes/manifest.json).")
+    added = stats_sections(folder, stats) + [scenes_section(records, stats)] + cost_sections(cost)
+    added.append({"type": "links", "title": "Corpus files", "items": [
+        {"text": t, "href": h} for t, h in [("stats/stats.md", "stats/stats.md"), ("stats/stats.json", "stats/stats.json"),
+                                             ("stats-all-maps/stats.md (every map size, against sm at the largest)",
+                                              "stats-all-maps/stats.md"),
+                                             ("cost/cost.md", "cost/cost.md"), ("cost/cost.json", "cost/cost.json"),
+                                             ("cost/scenes/ (per scene)", "cost/scenes/"),
+                                             ("scenes/manifest.json (what was sampled)", "scenes/manifest.json"),
+                                             ("command.txt", "command.txt")] if os.path.exists(os.path.join(folder, h))]})
+    # Run again (after new statistics), it replaces what it added before.
+    before = data.pop("corpus_page", {"notes": 0, "sections": 0})
+    data["title"] = f"Corpus: {len(manifest.get('scenes', []))} scenes, seed {manifest.get('seed')}"
+    data["notes"] = notes + data.get("notes", [])[before["notes"]:]
+    data["sections"] = added + data.get("sections", [])[before["sections"]:]
+    data["corpus_page"] = {"notes": len(notes), "sections": len(added)}
+    text = json.dumps(data, ensure_ascii=False).replace("</", "<\\/")
+    page = page[:match.start(2)] + text + page[match.end(2):]
+    page = re.sub(r"<title>.*?</title>", f"<title>{html.escape(data['title'])}</title>", page, count=1, flags=re.S)
+    with open(page_path + ".tmp", "w", encoding="utf-8") as f:
+        f.write(page)
+    os.replace(page_path + ".tmp", page_path)
+    print(f"corpus_page: {page_path}: {len(added)} sections added", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
