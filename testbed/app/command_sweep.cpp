@@ -18,6 +18,7 @@
 #include "testbed/gl/context.h"
 #include "testbed/harness/metric_table.h"
 #include "testbed/harness/record.h"
+#include "testbed/harness/sequence.h"
 #include "testbed/metrics/metrics.h"
 #include "testbed/scene/primitives.h"
 #include "testbed/sweep/sweep_records.h"
@@ -55,6 +56,23 @@ void warmUpGBuffer(const RenderSettings& settings) {
   plane.mesh = makePlane(1, 1);
   scene.objects.push_back(std::move(plane));
   FrameRunner warm(scene, {{16, 16}, 16, settings.depthFormat, 1, std::nullopt});
+}
+
+std::string sceneKeyOf(const SweepCell& cell) {
+  return cell.scene + "|" + (cell.subdivide ? std::to_string(*cell.subdivide) : "-");
+}
+
+// The spec's "frames" on one of its scenes; a range beyond the scene's frames names the
+// spec's field and the scene.
+FrameRange specFrameRange(const SweepSpec& spec, const std::string& sceneId, const Scene& scene) {
+  try {
+    return parseFrameRange(*spec.frames, scene);
+  } catch (const InputError& error) {
+    const std::string what = error.what();
+    const std::string prefix = "--frames: ";
+    throw InputError(spec.file.string() + ": frames: scene " + sceneId + ": " +
+                     (what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what));
+  }
 }
 
 }  // namespace
@@ -96,11 +114,15 @@ CommandRunner addSweepCommand(CLI::App& app) {
     }
     // Every scene and parameter set is checked before the first frame is rendered.
     std::map<std::string, Scene> scenes;
+    std::map<std::string, FrameRange> ranges;  // a spec over frames: each scene's range
     std::map<std::size_t, ParameterSet> parameters;
     for (const auto& key : frames) {
       const SweepCell& first = plan.cells[owned[key].front()];
-      const std::string sceneKey = first.scene + "|" + (first.subdivide ? std::to_string(*first.subdivide) : "-");
-      if (!scenes.count(sceneKey)) scenes.emplace(sceneKey, loadSweepScene(spec.scenes.at(first.scene), first.subdivide));
+      const std::string sceneKey = sceneKeyOf(first);
+      if (!scenes.count(sceneKey)) {
+        const Scene& scene = scenes.emplace(sceneKey, loadSweepScene(spec.scenes.at(first.scene), first.subdivide)).first->second;
+        if (spec.frames) ranges.emplace(sceneKey, specFrameRange(spec, first.scene, scene));
+      }
       for (std::size_t i : owned[key]) parameters.emplace(i, parametersOf(plan.cells[i]));
     }
     auto context = createContext(options->common.backend);
@@ -119,6 +141,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
     std::map<std::size_t, ResumedCell> finished = loadFinishedCells(out, identity, plan, shard, figure, std::cerr);
     std::vector<Record> records;
     std::map<std::size_t, FigureImages> figureImages;
+
     for (auto& [cell, resumed] : finished) {
       records.push_back(resumed.record);
       if (resumed.images) figureImages.emplace(cell, std::move(*resumed.images));
@@ -150,7 +173,12 @@ CommandRunner addSweepCommand(CLI::App& app) {
       std::size_t cells = 0;
       for (const auto& key : framesOf[truthKey]) cells += techniqueCells(key).size();
       const std::size_t truthCell = plan.cells[owned[framesOf[truthKey].front()].front()].truthCell;
-      if (cells > 0 || toRun(truthCell)) steps += cells + 1;
+      if (spec.frames)  // one step per frame set-up that runs a sequence
+        for (const auto& key : framesOf[truthKey])
+          steps += !techniqueCells(key).empty() ||
+                   (toRun(truthCell) && plan.cells[owned[key].front()].frameKey() == plan.cells[truthCell].frameKey());
+      else if (cells > 0 || toRun(truthCell))
+        steps += cells + 1;
     }
     if (steps > 0) warmUpGBuffer({});
     const auto start = Clock::now();
@@ -171,14 +199,12 @@ CommandRunner addSweepCommand(CLI::App& app) {
         const bool truthHere = !truthVisibility && (toRun(truthCell) || !cells.empty());
         if (cells.empty() && !truthHere) continue;
         const SweepCell& first = plan.cells[owned[key].front()];
-        const Scene& scene = scenes.at(first.scene + "|" + (first.subdivide ? std::to_string(*first.subdivide) : "-"));
-        FrameRunner runner(scene, {parseSize(first.size), first.shadowMap, parseDepthFormat(first.depthFormat), plan.repeat, path});
-        auto save = [&](std::size_t cell, const TechniqueRun& run, Record record) {
+        const Scene& scene = scenes.at(sceneKeyOf(first));
+        const RenderSettings settings{parseSize(first.size), first.shadowMap, parseDepthFormat(first.depthFormat), plan.repeat, path};
+        auto save = [&](std::size_t cell, std::optional<FigureImages> images, Record record) {
           record.cell = cell;
           if (!shard.owns(cell)) return;
-          std::optional<FigureImages> images;
-          if (figureSet.count(cell)) {
-            images = FigureImages{run.visibility, runner.shade(run.visibility)};
+          if (images) {
             if (shard.count > 1) {  // merge composes the figure from the shards' images
               files.writeImage(figureFileName(cell, "exr"), images->visibility);
               files.writeImage(figureFileName(cell, "png"), images->shaded);
@@ -192,6 +218,39 @@ CommandRunner addSweepCommand(CLI::App& app) {
           records.push_back(std::move(record));
           if (images) figureImages.emplace(cell, std::move(*images));
         };
+        if (spec.frames) {  // the set-up runs as one sequence: its reference first, then its cells
+          Scene moving = scene;  // the sequence moves the scene frame by frame
+          FrameRunner runner(moving, settings);
+          const bool own = toRun(truthCell) && first.frameKey() == plan.cells[truthCell].frameKey();
+          if (cells.empty() && !own) continue;
+          std::vector<std::size_t> sequenceCells = cells;
+          sequenceCells.insert(sequenceCells.begin(), truthCell);
+          std::vector<SequenceEntry> entries;
+          for (std::size_t i : sequenceCells)
+            entries.push_back({&techniqueOf(plan.cells[i]), i == truthCell ? resolveParameters(kGroundTruthId, {}, {}) : parameters.at(i)});
+          const FrameRange& range = ranges.at(sceneKeyOf(first));
+          progress(first, std::to_string(entries.size()) + " runs over " + std::to_string(range.count()) + " frames");
+          std::cerr << "\n";
+          std::map<std::size_t, FigureImages> last;  // the figure cells' last frame
+          const auto keepFigure = [&](const SequenceFrame& f) {
+            if (f.index + 1 == range.count() && figureSet.count(sequenceCells[f.entry]))
+              last.insert_or_assign(sequenceCells[f.entry], FigureImages{f.run->visibility, runner.shade(f.run->visibility)});
+          };
+          const auto outcomes = runFrames(entries, range, true, moving, runner, backend, keepFigure, std::cerr);
+          for (std::size_t e = 0; e < outcomes.size(); ++e) {
+            const std::size_t cell = sequenceCells[e];
+            Record record = outcomes[e].last;
+            record.sequence = sequenceBlock(outcomes[e].record);
+            checkSweepPasses(spec, plan, cell, record);
+            if (cell != truthCell || own) save(cell, last.count(cell) ? std::optional(last.at(cell)) : std::nullopt, record);
+          }
+          continue;
+        }
+        FrameRunner runner(scene, settings);
+        const auto figureImagesOf = [&](std::size_t cell, const ImageF& visibility) -> std::optional<FigureImages> {
+          if (!figureSet.count(cell)) return std::nullopt;
+          return FigureImages{visibility, runner.shade(visibility)};
+        };
         if (truthHere) {  // every technique's errors are taken against it
           const bool own = toRun(truthCell) && key == group.front() && first.frameKey() == plan.cells[truthCell].frameKey();
           progress(first, own ? "groundtruth" : "groundtruth (reference for the errors)");
@@ -204,7 +263,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
                       << ": it has no shadow edge to rank techniques by, so its records carry error.flag and statistics "
                          "leave them out\n";
           checkSweepPasses(spec, plan, truthCell, truthRecord);
-          if (own) save(truthCell, truth, truthRecord);
+          if (own) save(truthCell, figureImagesOf(truthCell, truth.visibility), truthRecord);
           truthVisibility = truth.visibility;
         }
         for (std::size_t i : cells) {
@@ -215,7 +274,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
           record.error = computeErrorMetrics(run.visibility, *truthVisibility);
           std::cerr << ": " << briefSummary(record, nullptr, ", ") << "\n";
           checkSweepPasses(spec, plan, i, record);  // a misnamed pass stops here, not after every cell
-          save(i, run, record);
+          save(i, figureImagesOf(i, run.visibility), record);
         }
       }
     }

@@ -69,5 +69,7 @@ CommandRunner addMergeCommand(CLI::App& app);
 CommandRunner addConformCommand(CLI::App& app);
 // `corpus`: generated scene files and their manifest (docs/corpus.md).
 CommandRunner addCorpusCommand(CLI::App& app);
+// `worst`: the worst-case search over one scene's light, camera and map size (docs/corpus.md).
+CommandRunner addWorstCommand(CLI::App& app);
 
 }  // namespace testbed

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
                                                   testbed::addSweepCommand(app),
                                                   testbed::addMergeCommand(app),
                                                   testbed::addCorpusCommand(app),
+                                                  testbed::addWorstCommand(app),
                                                   testbed::addConformCommand(app)};
 #ifdef TESTBED_WITH_VIEWER
   commands.push_back(testbed::addViewCommand(app));

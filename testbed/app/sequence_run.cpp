@@ -54,23 +54,6 @@ void plotSeries(const fs::path& series, const fs::path& folder) {
   runPythonScript("motion_plot.py", {series.string(), folder.string()}, series.string());
 }
 
-std::string duration(double seconds) {
-  const long s = long(seconds + 0.5);
-  char text[32];
-  std::snprintf(text, sizeof text, "%ldm%02lds", s / 60, s % 60);
-  return text;
-}
-
-// One technique's state across the frames.
-struct RunTrack {
-  const SequenceEntry* entry = nullptr;
-  std::unique_ptr<TechniqueSession> session;
-  SequenceSeries series;
-  nlohmann::json frames = nlohmann::json::array();
-  std::optional<Record> last;
-  std::unique_ptr<VideoWriter> video;
-};
-
 }  // namespace
 
 std::vector<std::string> sequenceOutputNames(const SequenceJob& job) {
@@ -89,54 +72,25 @@ std::vector<nlohmann::json> runSequence(const SequenceJob& job, Scene& scene, Fr
   const WorkFolder work;
   const int fps = scene.animation ? scene.animation->fps : 30;
   const glm::ivec2 size = runner.settings().size;
-  std::vector<RunTrack> tracks;
-  for (const auto& entry : job.entries) {
-    RunTrack track;
-    track.entry = &entry;
-    track.session = std::make_unique<TechniqueSession>(runner, *entry.technique, entry.parameters);
-    // Compared: shaded | error heat map; otherwise the shaded image alone.
-    track.video = std::make_unique<VideoWriter>(work.path() / (entry.technique->info->id + ".mp4"),
-                                                size.x * (job.compare ? 2 : 1), size.y, fps);
-    tracks.push_back(std::move(track));
-  }
-
-  const auto start = std::chrono::steady_clock::now();
-  const int count = job.range.count();
-  for (int k = 0; k < count; ++k) {
-    const int frame = job.range.at(k);
-    advanceTo(scene, runner, frame);
-    const glm::mat4 viewProjection = cameraTransforms(scene.camera, float(size.x) / float(size.y)).viewProjection();
-    std::optional<ImageF> truth;  // compare: the first entry's visibility, this frame only
-    for (auto& track : tracks) {
-      const TechniqueRun run = runner.run(*track.session, track.entry->parameters, k == 0);
-      Record record = makeRecord(run, runner, backend);
-      const ImageF shaded = runner.shade(run.visibility);
-      std::optional<TemporalFrame> temporal;
-      if (job.compare) {
-        if (!truth) truth = run.visibility;
-        record.error = computeErrorMetrics(run.visibility, *truth);
-        temporal.emplace(TemporalFrame{frame, run.visibility, *truth, runner.positions(), viewProjection});
-        track.video->addFrame(sideBySide(shaded, errorHeatMap(run.visibility, *truth)));
-      } else {
-        track.video->addFrame(shaded);
-      }
-      track.frames.push_back(track.series.addFrame(frame, record, temporal ? &*temporal : nullptr));
-      track.last = std::move(record);
-    }
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cerr << "testbed: frame " << k + 1 << "/" << count << " (frame " << frame << " of " << oneLine(scene.name)
-              << ", " << tracks.size() << (tracks.size() == 1 ? " run" : " runs") << "), elapsed "
-              << duration(elapsed) << ", ETA " << duration(elapsed / (k + 1) * (count - k - 1)) << "\n";
-  }
+  std::vector<std::unique_ptr<VideoWriter>> videos;
+  for (const auto& entry : job.entries)  // compared: shaded | error heat map; otherwise the shaded image alone
+    videos.push_back(std::make_unique<VideoWriter>(work.path() / (entry.technique->info->id + ".mp4"),
+                                                   size.x * (job.compare ? 2 : 1), size.y, fps));
+  const auto addVideoFrame = [&](const SequenceFrame& f) {
+    const ImageF shaded = runner.shade(f.run->visibility);
+    videos[f.entry]->addFrame(f.truth ? sideBySide(shaded, errorHeatMap(f.run->visibility, *f.truth)) : shaded);
+  };
+  const std::vector<SequenceOutcome> outcomes =
+      runFrames(job.entries, job.range, job.compare, scene, runner, backend, addVideoFrame, std::cerr);
 
   std::vector<nlohmann::json> records;
-  for (auto& track : tracks) {
-    const std::string& id = track.entry->technique->info->id;
-    track.video->finish();
-    files.writeText(id + ".mp4", readBytes(track.video->path()));
-    const std::string frames = track.frames.dump(2) + "\n";
+  for (std::size_t e = 0; e < outcomes.size(); ++e) {
+    const std::string& id = job.entries[e].technique->info->id;
+    videos[e]->finish();
+    files.writeText(id + ".mp4", readBytes(videos[e]->path()));
+    const std::string frames = outcomes[e].frames.dump(2) + "\n";
     files.writeText(id + "_frames.json", frames);
-    records.push_back(track.series.sequenceRecord(*track.last, job.range, fps));
+    records.push_back(outcomes[e].record);
     files.writeText(id + "_sequence.json", records.back().dump(2) + "\n");
     if (job.compare && job.plots) {
       const fs::path series = work.path() / (id + "_frames.json");

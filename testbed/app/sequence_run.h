@@ -14,11 +14,6 @@
 
 namespace testbed {
 
-struct SequenceEntry {
-  const RegisteredTechnique* technique;
-  ParameterSet parameters;
-};
-
 struct SequenceJob {
   FrameRange range;
   // compare: `truth` is rendered first and every technique is compared with it; render and

@@ -230,6 +230,11 @@ Record read(const Reader& r) {
   const Reader error = r["error"];
   if (!error.value.is_null() && !error.value.is_object()) error.fail("expected an object or null");
   if (r.has("cell")) out.cell = std::size_t(r["cell"].count());
+  if (r.has("sequence")) {
+    const Reader sequence = r["sequence"];
+    if (!sequence.value.is_object() || !sequence.has("series")) sequence.fail("expected an object with \"series\"");
+    out.sequence = sequence.value;
+  }
   if (r.has("path")) {
     out.path = parsePath(r["path"].text());
     if (!out.path) r["path"].fail("expected \"paper\" or \"fast\"");
@@ -339,6 +344,7 @@ void to_json(json& out, const Record& r) {
          {"backend", r.backend},
          {"error", nullptr}};
   if (r.cell) out["cell"] = *r.cell;
+  if (r.sequence) out["sequence"] = *r.sequence;
   if (r.path) out["path"] = std::string(pathName(*r.path));
   if (r.memory) out["memory"] = memoryJson(*r.memory);
   if (r.workRecorded) out["work"] = workJson(r.work);

@@ -48,6 +48,10 @@ struct Record {
   bool workRecorded = true;
   std::optional<ErrorMetrics> error;  // null until compared with the ground truth
   std::optional<std::size_t> cell;    // a sweep's cell index (records.json only)
+  // A sweep cell run over frames (docs/paper-runs.md "Frames"): the sequence record's
+  // "frames", "light_fit", "series" and "temporal" blocks; the rest of the record is the
+  // last frame's.
+  std::optional<nlohmann::json> sequence;
 
   const PassesRecord& timed() const { return timing == TimingSource::Wall ? wall : gpu; }
 };

@@ -1,10 +1,14 @@
 #include "testbed/harness/sequence.h"
 
 #include <charconv>
+#include <chrono>
+#include <cstdio>
+#include <memory>
 #include <stdexcept>
 #include <string_view>
 
 #include "testbed/core/error.h"
+#include "testbed/core/messages.h"
 #include "testbed/harness/metric_table.h"
 
 namespace testbed {
@@ -13,6 +17,13 @@ namespace {
 bool parseInt(std::string_view text, int& value) {
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
   return !text.empty() && ec == std::errc() && end == text.data() + text.size();
+}
+
+std::string duration(double seconds) {
+  const long s = long(seconds + 0.5);
+  char text[32];
+  std::snprintf(text, sizeof text, "%ldm%02lds", s / 60, s % 60);
+  return text;
 }
 
 }  // namespace
@@ -101,6 +112,60 @@ nlohmann::json SequenceSeries::sequenceRecord(const Record& last, const FrameRan
                         {"frame_pairs", t.framePairs}};
   }
   return json;
+}
+
+std::vector<SequenceOutcome> runFrames(const std::vector<SequenceEntry>& entries, const FrameRange& range, bool compare,
+                                       Scene& scene, FrameRunner& runner, const std::string& backend,
+                                       const std::function<void(const SequenceFrame&)>& onFrame, std::ostream& log) {
+  struct Track {
+    std::unique_ptr<TechniqueSession> session;
+    SequenceSeries series;
+    SequenceOutcome outcome;
+  };
+  std::vector<Track> tracks;
+  for (const auto& entry : entries)
+    tracks.push_back({std::make_unique<TechniqueSession>(runner, *entry.technique, entry.parameters), {}, {}});
+  const glm::ivec2 size = runner.settings().size;
+  const auto start = std::chrono::steady_clock::now();
+  const int count = range.count();
+  for (int k = 0; k < count; ++k) {
+    const int frame = range.at(k);
+    advanceTo(scene, runner, frame);
+    const glm::mat4 viewProjection = cameraTransforms(scene.camera, float(size.x) / float(size.y)).viewProjection();
+    std::optional<ImageF> truth;  // compared: the first entry's visibility, this frame only
+    for (std::size_t e = 0; e < tracks.size(); ++e) {
+      Track& track = tracks[e];
+      const TechniqueRun run = runner.run(*track.session, entries[e].parameters, k == 0);
+      Record record = makeRecord(run, runner, backend);
+      std::optional<TemporalFrame> temporal;
+      if (compare) {
+        if (!truth) truth = run.visibility;
+        record.error = computeErrorMetrics(run.visibility, *truth);
+        temporal.emplace(TemporalFrame{frame, run.visibility, *truth, runner.positions(), viewProjection});
+      }
+      if (onFrame) onFrame({k, frame, e, &run, truth ? &*truth : nullptr});
+      track.outcome.frames.push_back(track.series.addFrame(frame, record, temporal ? &*temporal : nullptr));
+      track.outcome.last = std::move(record);
+    }
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    log << "testbed: frame " << k + 1 << "/" << count << " (frame " << frame << " of " << oneLine(scene.name) << ", "
+        << tracks.size() << (tracks.size() == 1 ? " run" : " runs") << "), elapsed " << duration(elapsed) << ", ETA "
+        << duration(elapsed / (k + 1) * (count - k - 1)) << "\n";
+  }
+  const int fps = scene.animation ? scene.animation->fps : 30;
+  std::vector<SequenceOutcome> outcomes;
+  for (auto& track : tracks) {
+    track.outcome.record = track.series.sequenceRecord(track.outcome.last, range, fps);
+    outcomes.push_back(std::move(track.outcome));
+  }
+  return outcomes;
+}
+
+nlohmann::json sequenceBlock(const nlohmann::json& sequenceRecord) {
+  nlohmann::json block = nlohmann::json::object();
+  for (const char* key : {"frames", "light_fit", "series", "temporal"})
+    if (sequenceRecord.contains(key)) block[key] = sequenceRecord[key];
+  return block;
 }
 
 ImageF sideBySide(const ImageF& left, const ImageF& right) {

@@ -2,7 +2,9 @@
 // Runs over the frames of an animated scene (docs/motion.md): which frames (--frames), how
 // the runner follows the scene from one frame to the next, and what a technique's sequence
 // becomes on disk: a per-frame record each frame and one sequence record at the end.
+#include <functional>
 #include <map>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -48,6 +50,38 @@ class SequenceSeries {
   TemporalAccumulator accumulator_;
   bool compared_ = false;
 };
+
+struct SequenceEntry {
+  const RegisteredTechnique* technique;
+  ParameterSet parameters;
+};
+
+// What a per-frame hook sees of one entry's run at one frame.
+struct SequenceFrame {
+  int index = 0, frame = 0;   // index within the range, frame number
+  std::size_t entry = 0;      // index into the entries
+  const TechniqueRun* run = nullptr;
+  const ImageF* truth = nullptr;  // compared: the first entry's visibility this frame
+};
+
+// One entry's results over the range.
+struct SequenceOutcome {
+  nlohmann::json frames = nlohmann::json::array();  // the per-frame records (SequenceSeries::addFrame)
+  nlohmann::json record;                            // the sequence record
+  Record last;                                      // the last frame's record
+};
+
+// The frame loop shared by `compare/render/groundtruth --frames` and sweeps over frames:
+// frames outer, entries inner, each entry's session kept across frames. `compare`: the
+// first entry is the reference every entry's errors and temporal figures are taken
+// against. `onFrame` (may be empty) sees every run, for videos; one progress line per
+// frame with ETA goes to `log`.
+std::vector<SequenceOutcome> runFrames(const std::vector<SequenceEntry>& entries, const FrameRange& range, bool compare,
+                                       Scene& scene, FrameRunner& runner, const std::string& backend,
+                                       const std::function<void(const SequenceFrame&)>& onFrame, std::ostream& log);
+
+// The sequence blocks a sweep record carries (Record::sequence): frames, light_fit, series, temporal.
+nlohmann::json sequenceBlock(const nlohmann::json& sequenceRecord);
 
 // Shaded image | error heat map, for a video frame: two RGB images of one height.
 ImageF sideBySide(const ImageF& left, const ImageF& right);

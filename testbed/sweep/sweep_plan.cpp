@@ -52,6 +52,7 @@ nlohmann::json SweepCell::toJson() const {
   nlohmann::json j = {{"scene", scene}, {"size", size}, {"shadow_map", shadowMap}, {"depth_format", depthFormat},
                       {"technique", technique}, {"params", params}};
   if (subdivide) j["subdivide"] = *subdivide;
+  if (frames) j["frames"] = *frames;
   return j;
 }
 
@@ -86,6 +87,7 @@ SweepPlan planSweep(const SweepSpec& spec, const SweepOverrides& overrides) {
       base.shadowMap = overrides.shadowMap.value_or(firstOf<int>({&col.shadowMap, &row.shadowMap, &top.shadowMap}).value_or(1024));
       base.depthFormat =
           overrides.depthFormat.value_or(firstOf<std::string>({&col.depthFormat, &row.depthFormat, &top.depthFormat}).value_or("16"));
+      base.frames = spec.frames;
 
       const auto truth = truthOf.find(base.truthKey());
       if (truth == truthOf.end()) {

@@ -34,6 +34,7 @@ struct SweepCell {
   std::string technique;               // registry id or "groundtruth"
   std::map<std::string, std::string> params;  // the technique's own names → value text
   std::size_t truthCell = 0;           // the ground-truth cell of the same frame
+  std::optional<std::string> frames;   // the spec's "frames": the cell runs over them
 
   // Identifies the frame set-up (scene, subdivision, sizes, depth format): one FrameRunner.
   std::string frameKey() const;

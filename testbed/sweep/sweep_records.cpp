@@ -82,6 +82,9 @@ void matchRecord(const Record& record, const SweepCell& cell, const std::string&
     differs("shadow_map", std::to_string(record.shadowMap), std::to_string(cell.shadowMap));
   if (record.depthFormat != cell.depthFormat) differs("depth_format", record.depthFormat, cell.depthFormat);
   if (record.params != params) differs("params", briefJson(record.params), briefJson(params));
+  if (record.sequence.has_value() != cell.frames.has_value())
+    differs("sequence", record.sequence ? "a sequence" : "one frame",
+            cell.frames ? "run over frames " + *cell.frames : "one frame");
 }
 
 namespace {

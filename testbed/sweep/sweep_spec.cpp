@@ -7,10 +7,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "testbed/core/error.h"
 #include "testbed/harness/record.h"
+#include "testbed/harness/sequence.h"
 #include "testbed/io/json_input.h"
 #include "testbed/technique/registry.h"
 
@@ -237,19 +239,18 @@ bool needsBaseline(const Metric& m) {
   return !m.value(probe, nullptr) && m.value(probe, &probe);
 }
 
-const Metric* measureOf(const json& value, const SpecReader& r) {
+SweepMeasure measureOf(const json& value, const SpecReader& r) {
   const std::string name = r.text(value, "measure");
   std::string known;
-  const Metric* found = nullptr;
-  for (const Metric& m : metricTable()) {
-    if (needsBaseline(m)) continue;
-    known += (known.empty() ? "" : ", ") + std::string(m.name);
-    if (m.name == name) found = &m;
-  }
-  if (!found)
-    r.fail("measure", "expected a metric of the metric table (" + known + "), got " + SpecReader::show(value) +
+  for (const Metric& m : metricTable())
+    if (!needsBaseline(m)) known += (known.empty() ? "" : ", ") + std::string(m.name);
+  const auto found = findSweepMeasure(name);
+  if (!found || (found->metric && !found->overFrames() && needsBaseline(*found->metric)))
+    r.fail("measure", "expected a metric of the metric table (" + known +
+                          "), or over frames flicker, crawl, crawl_missed or METRIC.mean/.p95/.max, got " +
+                          SpecReader::show(value) +
                           (name.rfind("x_sm", 0) == 0 ? " (a ratio to sm: the table adds ×SM columns itself)" : ""));
-  return found;
+  return *found;
 }
 
 // "axes": the columns as the product scene × size × shadow_map × depth_format × subdivide
@@ -331,6 +332,63 @@ bool SweepRow::measured(std::size_t column) const {
   return std::find(notMeasuredColumns.begin(), notMeasuredColumns.end(), column) == notMeasuredColumns.end();
 }
 
+namespace {
+
+// The sequence figures by measure name: JSON pointer into Record::sequence, decimals.
+struct TemporalFigure {
+  const char* name;
+  const char* pointer;
+  int digits;
+};
+constexpr TemporalFigure kTemporalFigures[] = {
+    {"flicker", "/temporal/flicker", 5},
+    {"crawl", "/temporal/crawl_pct", 4},
+    {"crawl_missed", "/temporal/crawl_missed_pct", 4},
+};
+
+}  // namespace
+
+std::optional<SweepMeasure> findSweepMeasure(const std::string& name) {
+  for (const auto& t : kTemporalFigures)
+    if (name == t.name) return SweepMeasure{name, nullptr, t.pointer};
+  for (const Metric& m : metricTable())  // first: names with a dot of their own (boundary_px.mean)
+    if (m.name == name) return SweepMeasure{name, &m, ""};
+  const auto dot = name.rfind('.');
+  if (dot != std::string::npos) {
+    const std::string statistic = name.substr(dot + 1);
+    const Metric* m = nullptr;
+    for (const Metric& candidate : metricTable())
+      if (candidate.name == name.substr(0, dot)) m = &candidate;
+    if (m && !m->path.empty() && (statistic == "mean" || statistic == "p95" || statistic == "max"))
+      return SweepMeasure{name, m, "/series/" + std::string(m->name) + "/" + statistic};
+  }
+  return std::nullopt;
+}
+
+std::optional<double> SweepMeasure::value(const Record& record) const {
+  if (!overFrames()) return metric->value(record, nullptr);
+  if (!record.sequence) return std::nullopt;
+  const json::json_pointer pointer(sequencePointer);
+  if (!record.sequence->contains(pointer) || !record.sequence->at(pointer).is_number()) return std::nullopt;
+  return record.sequence->at(pointer).get<double>();
+}
+
+std::string SweepMeasure::unit() const {
+  if (metric) return std::string(metric->unit());
+  return name == "flicker" ? "" : "%";
+}
+
+int SweepMeasure::digits() const {
+  if (metric) return metric->digits;
+  for (const auto& t : kTemporalFigures)
+    if (name == t.name) return t.digits;
+  return 4;
+}
+
+bool SweepMeasure::error() const { return !metric || metric->path.starts_with("/error/"); }
+
+Better SweepMeasure::better() const { return metric ? metric->better : Better::Lower; }
+
 SweepSpec loadSweepSpec(const fs::path& file) { return parseSweepSpec(readJsonInput(file, kMaxSweepSpecBytes), file); }
 
 SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneFilesMustExist) {
@@ -339,7 +397,7 @@ SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneF
   spec.file = file;
   spec.document = document;
   r.keys(document, "", {"name", "title", "citation", "comment", "note", "scenes", "scene_order", "settings", "measure",
-                        "columns", "axes", "rows", "techniques", "figure"});
+                        "frames", "columns", "axes", "rows", "techniques", "figure"});
   for (const char* required : {"name", "scenes"})
     if (!document.contains(required)) r.fail(required, "missing (required)");
   if (document.contains("columns") == document.contains("axes"))
@@ -391,6 +449,22 @@ SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneF
     if (settings.contains("repeat")) spec.repeat = r.integer(settings["repeat"], "settings.repeat", 1, 10000);
   }
   if (document.contains("measure")) spec.measure = measureOf(document["measure"], r);
+  if (document.contains("frames")) {
+    spec.frames = r.text(document["frames"], "frames");
+    Scene probe;  // the syntax now; the range against each scene's frames when the sweep loads it
+    auto frames = std::make_shared<Animation>();
+    frames->frames = std::numeric_limits<int>::max();
+    probe.animation = frames;
+    try {
+      parseFrameRange(*spec.frames, probe);
+    } catch (const InputError& error) {
+      const std::string what = error.what();
+      r.fail("frames", what.find("outside") != std::string::npos ? *spec.frames + ": expected 0 <= A <= B"
+                                                                 : what.substr(std::string("--frames: ").size()));
+    }
+  }
+  if (spec.measure.overFrames() && !spec.frames)
+    r.fail("measure", "\"" + spec.measure.name + "\" is a figure over frames: the spec needs \"frames\" (all or A:B[:STEP])");
 
   if (document.contains("axes")) spec.columns = axisColumns(document["axes"], r, sceneOrder);
   const json& columns = document.contains("columns") ? document["columns"] : json::array({nullptr});

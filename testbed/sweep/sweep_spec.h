@@ -67,6 +67,26 @@ struct SweepFigure {
   std::optional<std::array<int, 3>> window;  // x, y, side in pixels; unset: where techniques differ most
 };
 
+// What a table's numbers are: a metric of the metric table, read from the record; or, for
+// a spec over frames, a figure of its sequence (docs/paper-runs.md "Frames"): `flicker`,
+// `crawl`, `crawl_missed`, or a stored metric's mean, p95 or max over the frames
+// ("rmse.p95").
+struct SweepMeasure {
+  std::string name;
+  const Metric* metric = nullptr;  // the metric itself, or the one a series statistic summarizes; null for flicker and crawl
+  std::string sequencePointer;     // non-empty: a JSON pointer into Record::sequence
+
+  bool overFrames() const { return !sequencePointer.empty(); }
+  std::optional<double> value(const Record& record) const;
+  std::string unit() const;
+  int digits() const;
+  bool error() const;  // an error figure (its ratio to sm is an error ratio, not a cost)
+  Better better() const;
+};
+
+// The measure called `name`, or nullopt: a metric with `use`, or a sequence figure.
+std::optional<SweepMeasure> findSweepMeasure(const std::string& name);
+
 struct SweepSpec {
   std::filesystem::path file;
   nlohmann::json document;  // as read, for the shards' identity and for merge
@@ -76,7 +96,9 @@ struct SweepSpec {
   int repeat = 1;
   // What the table's numbers are: a kSweepMeasure metric (frame_ms: the whole frame as the
   // papers measured it, G-buffer plus every pass of the technique; fps; memory_mb).
-  const Metric* measure = &metric("frame_ms");
+  SweepMeasure measure{"frame_ms", &metric("frame_ms"), ""};
+  // "all" or "A:B[:STEP]" (as --frames): every cell runs over these frames of its scene.
+  std::optional<std::string> frames;
   std::vector<SweepColumn> columns;
   std::vector<SweepRow> rows;
   SweepFigure figure;

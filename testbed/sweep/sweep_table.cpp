@@ -30,14 +30,14 @@ double passMs(const Record& record, const std::string& pass, const SweepSpec& sp
 // made of those passes alone.
 double cellValue(const Record& record, const SweepSpec& spec, std::size_t row) {
   const SweepRow& r = spec.rows[row];
-  if (!r.passes) return spec.measure->value(record, nullptr).value_or(NAN);
+  if (!r.passes) return spec.measure.value(record).value_or(NAN);
   Record part = record;
   part.gbufferMs = 0;
   PassesRecord& timed = part.timing == TimingSource::Wall ? part.wall : part.gpu;
   timed.totalMs = 0;
   for (const auto& pass : *r.passes)
     (pass == "gbuffer" ? part.gbufferMs : timed.totalMs) += passMs(record, pass, spec, row);
-  return spec.measure->value(part, nullptr).value_or(NAN);
+  return spec.measure.value(part).value_or(NAN);
 }
 
 }  // namespace
@@ -55,9 +55,9 @@ void checkSweepPasses(const SweepSpec& spec, const SweepPlan& plan, std::size_t 
 namespace {
 
 // Cost of `value` relative to `baseline` (> 1: dearer than sm), whatever the measure.
-std::optional<double> costRatio(std::optional<double> value, std::optional<double> baseline, const Metric& measure) {
+std::optional<double> costRatio(std::optional<double> value, std::optional<double> baseline, const SweepMeasure& measure) {
   if (!value || !baseline || *value <= 0 || *baseline <= 0) return std::nullopt;
-  return measure.better == Better::Higher ? *baseline / *value : *value / *baseline;
+  return measure.better() == Better::Higher ? *baseline / *value : *value / *baseline;
 }
 
 bool isSmRow(const SweepRow& row) { return row.techniques == std::vector<std::string>{"sm"} && !row.passes; }
@@ -83,10 +83,10 @@ SweepTable buildSweepTable(const SweepSpec& spec, const SweepPlan& plan, const s
   table.title = spec.title;
   table.citation = spec.citation;
   table.note = spec.note;
-  table.unit = std::string(spec.measure->unit());
-  table.measure = std::string(spec.measure->name);
-  table.errorMeasure = spec.measure->path.starts_with("/error/");
-  table.digits = spec.measure->digits;
+  table.unit = spec.measure.unit();
+  table.measure = spec.measure.name;
+  table.errorMeasure = spec.measure.error();
+  table.digits = spec.measure.digits();
   for (const auto& column : spec.columns) table.columns.push_back(column.label);
   table.paperColumns.assign(spec.columns.size(), false);
   for (const auto& row : spec.rows)
@@ -135,8 +135,8 @@ SweepTable buildSweepTable(const SweepSpec& spec, const SweepPlan& plan, const s
       const auto& base = plan.entries[*baseline][c];
       const bool sameFrame = !ours.empty() && !base.empty() &&
                              plan.cells[ours.front()].frameKey() == plan.cells[base.front()].frameKey();
-      row.oursRatio.push_back(sameFrame ? costRatio(row.ours[c], table.rows[*baseline].ours[c], *spec.measure) : std::nullopt);
-      row.paperRatio.push_back(costRatio(row.paper[c], table.rows[*baseline].paper[c], *spec.measure));
+      row.oursRatio.push_back(sameFrame ? costRatio(row.ours[c], table.rows[*baseline].ours[c], spec.measure) : std::nullopt);
+      row.paperRatio.push_back(costRatio(row.paper[c], table.rows[*baseline].paper[c], spec.measure));
     }
   }
   return table;

@@ -305,7 +305,7 @@ TEST(SweepStudy, ScenesAsAnAxisExpandScenesTechniquesAndSizes) {
     EXPECT_EQ(spec.columns[3].label, "wall · 128²");
     ASSERT_EQ(spec.rows.size(), 2u);
     EXPECT_EQ(spec.rows[1].label, "pcf");
-    EXPECT_EQ(spec.measure->name, "mismatch_pct");
+    EXPECT_EQ(spec.measure.name, "mismatch_pct");
     // The expanded list is part of the spec's identity (what shards fingerprint).
     EXPECT_TRUE(spec.document["scenes"].is_object());
     EXPECT_EQ(spec.document["scene_order"], json({"bunny", "wall"}));
@@ -378,6 +378,42 @@ TEST(SweepStudy, BadScenesAndMeasuresNameTheField) {
     EXPECT_NE(message.find(c.expected), std::string::npos) << message;
   }
   EXPECT_EQ(errorOf(studySpec(folder.dir.string())), "");
+}
+
+// Figures over frames (docs/paper-runs.md "Frames"): a temporal measure needs "frames";
+// a series statistic reads the sequence block's mean/p95/max of a stored metric.
+TEST(SweepFrames, TemporalMeasuresNeedFramesAndReadTheSequenceBlock) {
+  json spec = tinySpec();
+  spec["measure"] = "flicker";
+  EXPECT_NE(errorOf(spec).find(": measure: \"flicker\" is a figure over frames: the spec needs \"frames\""),
+            std::string::npos) << errorOf(spec);
+  spec["measure"] = "rmse.p95";
+  EXPECT_NE(errorOf(spec).find(": measure: \"rmse.p95\" is a figure over frames"), std::string::npos);
+  spec["frames"] = "0:1:";
+  EXPECT_NE(errorOf(spec).find(": frames: expected all or A:B[:STEP]"), std::string::npos) << errorOf(spec);
+  spec["frames"] = "2:1";
+  EXPECT_NE(errorOf(spec).find(": frames: 2:1: expected 0 <= A <= B"), std::string::npos) << errorOf(spec);
+  spec["measure"] = "rmse.median";
+  spec["frames"] = "all";
+  EXPECT_NE(errorOf(spec).find(": measure: expected a metric"), std::string::npos) << errorOf(spec);
+
+  spec["measure"] = "rmse.p95";
+  const SweepSpec parsed = parseSweepSpec(spec, kSpecFile);
+  ASSERT_TRUE(parsed.measure.overFrames());
+  EXPECT_EQ(parsed.measure.digits(), metric("rmse").digits);
+  EXPECT_TRUE(parsed.measure.error());
+  const SweepPlan plan = planSweep(parsed, {});
+  EXPECT_EQ(plan.cells.front().frames, std::optional<std::string>("all"));
+  Record record;
+  EXPECT_FALSE(parsed.measure.value(record).has_value());  // a one-frame record has no series
+  record.sequence = json{{"series", {{"rmse", {{"mean", 0.1}, {"p95", 0.25}, {"max", 0.3}}}}},
+                         {"temporal", {{"flicker", 0.02}, {"crawl_pct", 1.5}, {"crawl_missed_pct", 0.5}}}};
+  EXPECT_EQ(parsed.measure.value(record), 0.25);
+  EXPECT_EQ(findSweepMeasure("flicker")->value(record), 0.02);
+  EXPECT_EQ(findSweepMeasure("crawl")->value(record), 1.5);
+  EXPECT_EQ(findSweepMeasure("crawl_missed")->value(record), 0.5);
+  EXPECT_EQ(findSweepMeasure("crawl")->unit(), "%");
+  EXPECT_FALSE(findSweepMeasure("frames"));
 }
 
 }  // namespace

@@ -1,0 +1,258 @@
+// `testbed worst --scene S --technique T [--against B] [--metric M] --budget N --k K
+// --seed X --out DIR` (docs/corpus.md "Worst-case search"): searches the light, the camera
+// and the shadow-map size of one scene for where T's error (or its excess over B's) is
+// largest, and writes the k worst as scene files with a manifest of each one's figure and
+// the compare command that reproduces it.
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <tuple>
+#include <sstream>
+
+#include "groundtruth/shadow_volumes.h"
+#include "testbed/app/commands.h"
+#include "testbed/app/plugins.h"
+#include "testbed/core/error.h"
+#include "testbed/core/messages.h"
+#include "testbed/gl/context.h"
+#include "testbed/harness/metric_table.h"
+#include "testbed/harness/record.h"
+#include "testbed/sweep/scene_variant.h"
+#include "testbed/sweep/worst_search.h"
+
+namespace testbed {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Caps that keep a typo from running for days (docs/input-limits.md).
+constexpr int kMaxWorstBudget = 100000;
+constexpr int kMaxWorstCases = 1000;
+
+struct WorstOptions {
+  CommonOptions common;
+  std::string scene, technique, against, metric = "mismatch_pct", elevation = "3:85", mapSizes = "256,512,1024";
+  int budget = 0, k = 1;
+  std::uint64_t seed = 1;
+  bool fixedCamera = false;
+};
+
+// An error metric of the metric table (one the record's error block holds).
+const Metric& errorMetric(const std::string& name) {
+  std::string known;
+  for (const Metric& m : metricTable()) {
+    if (!m.path.starts_with("/error/")) continue;
+    if (m.name == name) return m;
+    known += (known.empty() ? "" : ", ") + std::string(m.name);
+  }
+  throw InputError("--metric: expected an error metric of the metric table (" + known + "), got '" + name + "'");
+}
+
+// "A:B" degrees with 0 <= A <= B <= 90.
+std::pair<double, double> parseElevation(const std::string& text) {
+  double a = 0, b = 0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%lf:%lf%c", &a, &b, &tail) != 2 || !(0 <= a && a <= b && b <= 90))
+    throw InputError("--elevation: expected MIN:MAX degrees with 0 <= MIN <= MAX <= 90, got '" + text + "'");
+  return {a, b};
+}
+
+std::vector<int> parseMapSizes(const std::string& text) {
+  std::vector<int> sizes;
+  std::stringstream in(text);
+  for (std::string part; std::getline(in, part, ',');) {
+    std::size_t used = 0;
+    int size = 0;
+    try {
+      size = std::stoi(part, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != part.size() || size < 1 || size > kMaxShadowMapSize)
+      throw InputError("--map-sizes: expected sizes 1.." + std::to_string(kMaxShadowMapSize) +
+                       " separated by commas, got '" + text + "'");
+    sizes.push_back(size);
+  }
+  if (sizes.empty()) throw InputError("--map-sizes: expected at least one size");
+  return sizes;
+}
+
+std::string minutesSeconds(double seconds) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%d:%02d", int(seconds) / 60, int(seconds) % 60);
+  return text;
+}
+
+// One configuration's figures: the technique's metric and, with a baseline, the baseline's.
+struct Evaluation {
+  double technique = 0;
+  std::optional<double> baseline;
+  double figure() const { return technique - baseline.value_or(0.0); }
+};
+
+class Evaluator {
+ public:
+  Evaluator(const RenderSettings& settings, const Metric& metric, const RegisteredTechnique& technique,
+            const RegisteredTechnique* baseline, std::string backend)
+      : settings_(settings), metric_(metric), technique_(technique), baseline_(baseline), backend_(std::move(backend)) {}
+
+  // As `compare` measures it: the ground truth and each technique on one runner.
+  Evaluation operator()(const Scene& scene, int shadowMap) const {
+    RenderSettings settings = settings_;
+    settings.shadowMapSize = shadowMap;
+    FrameRunner runner(scene, settings);
+    const TechniqueRun truth = runner.run(shadowVolumeGroundTruth(), resolveParameters("groundtruth", {}, {}));
+    auto figure = [&](const RegisteredTechnique& t) {
+      const TechniqueRun run = runner.run(t, resolveParameters(t.info->id, t.info->parameters, {}));
+      Record record = makeRecord(run, runner, backend_);
+      record.error = computeErrorMetrics(run.visibility, truth.visibility);
+      return metric_.value(record, nullptr).value_or(0.0);
+    };
+    Evaluation e;
+    if (baseline_) e.baseline = figure(*baseline_);
+    e.technique = figure(technique_);
+    return e;
+  }
+
+ private:
+  RenderSettings settings_;
+  const Metric& metric_;
+  const RegisteredTechnique& technique_;
+  const RegisteredTechnique* baseline_;
+  std::string backend_;
+};
+
+Scene withConfiguration(const Scene& base, const WorstConfiguration& c) {
+  Scene scene = base;
+  scene.camera = c.camera;
+  scene.light = c.light;
+  return scene;
+}
+
+int runWorst(const CLI::App& command, const WorstOptions& o) {
+  RenderSettings settings = o.common.settings();
+  if (o.budget < 1 || o.budget > kMaxWorstBudget)
+    throw InputError("--budget: " + std::to_string(o.budget) + " is outside 1.." + std::to_string(kMaxWorstBudget));
+  if (o.k < 1 || o.k > kMaxWorstCases)
+    throw InputError("--k: " + std::to_string(o.k) + " is outside 1.." + std::to_string(kMaxWorstCases));
+  if (o.k > o.budget)
+    throw InputError("--k: " + std::to_string(o.k) + " is more than --budget " + std::to_string(o.budget) +
+                     " (the search reports only configurations it rendered)");
+  WorstSpace space;
+  std::tie(space.elevationMin, space.elevationMax) = parseElevation(o.elevation);
+  space.mapSizes = parseMapSizes(o.mapSizes);
+  space.moveCamera = !o.fixedCamera;
+  const Metric& metric = errorMetric(o.metric);
+  loadPlugins(o.common.plugins);
+  const RegisteredTechnique& technique = findTechnique(o.technique);
+  const RegisteredTechnique* baseline = nullptr;
+  if (!o.against.empty()) try {
+      baseline = &findTechnique(o.against);
+    } catch (const InputError& error) {  // the registry names --technique
+      throw InputError("--against: " + std::string(error.what()).substr(std::string("--technique: ").size()));
+    }
+  const Scene base = loadScene(o.scene);
+  if (base.animation) throw InputError("--scene: " + o.scene + " is animated; the search moves a still scene");
+  readSceneDocument(base);
+
+  OutputFiles files(o.common.out);
+  std::vector<std::string> names{"manifest.json"};
+  for (int i = 1; i <= o.k; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "worst_%02d.json", i);
+    names.push_back(name);
+  }
+  for (const auto& name : names) files.claim(name);
+  auto context = createContext(o.common.backend);
+  for (int size : space.mapSizes) {
+    settings.shadowMapSize = size;
+    validateSettings(settings);
+  }
+  const Evaluator evaluate(settings, metric, technique, baseline, context->description());
+
+  WorstSearch search(o.seed, std::size_t(o.budget));
+  const auto start = std::chrono::steady_clock::now();
+  const std::string what = o.technique + " " + o.metric + (baseline ? " over " + o.against + "'s" : "");
+  while (!search.done()) {
+    const WorstPoint point = search.next();
+    const WorstConfiguration c = configurationAt(base, space, point);
+    const double figure = evaluate(withConfiguration(base, c), c.shadowMap).figure();
+    search.report(point, figure);
+    const std::size_t n = search.evaluated();
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cerr << "[" << n << "/" << o.budget << "] " << what << " = " << figure << " (light " << c.lightElevation
+              << "° up, map " << c.shadowMap << "²), worst so far " << search.worst(1).front().figure << ", ETA "
+              << minutesSeconds(elapsed / double(n) * double(std::size_t(o.budget) - n)) << "\n";
+  }
+
+  // Each case written, read back from where it lands and rendered again: the manifest's
+  // figure is the written file's, which `compare` reproduces.
+  nlohmann::json cases = nlohmann::json::array();
+  const auto worst = search.worst(std::size_t(o.k));
+  for (std::size_t i = 0; i < worst.size(); ++i) {
+    const WorstConfiguration c = configurationAt(base, space, worst[i].point);
+    const fs::path destination = fs::path(o.common.out) / names[i + 1];
+    const nlohmann::ordered_json document = sceneWithView(readSceneDocument(base), base.file, destination, c.camera, c.light);
+    const Scene written = parseScene(nlohmann::json::parse(document.dump()), destination);
+    const Evaluation e = evaluate(written, c.shadowMap);
+    files.writeText(names[i + 1], document.dump(2) + "\n");
+    std::string compare = "testbed compare --scene " + names[i + 1] + " --techniques " + o.technique +
+                          (baseline ? "," + o.against : "") + " --size " + o.common.size + " --shadow-map " +
+                          std::to_string(c.shadowMap) + " --backend " + o.common.backend;
+    if (!o.common.path.empty()) compare += " --path " + o.common.path;
+    nlohmann::json entry = {{"file", names[i + 1]},
+                            {"figure", e.figure()},
+                            {"technique_value", e.technique},
+                            {"search_figure", worst[i].figure},
+                            {"evaluation", worst[i].evaluation},
+                            {"shadow_map", c.shadowMap},
+                            {"light_elevation_deg", c.lightElevation},
+                            {"light_azimuth_deg", c.lightAzimuth},
+                            {"compare", compare + " --out DIR"}};
+    if (e.baseline) entry["baseline_value"] = *e.baseline;
+    cases.push_back(entry);
+  }
+  const nlohmann::json manifest = {
+      {"scene", o.scene},
+      {"technique", o.technique},
+      {"against", baseline ? nlohmann::json(o.against) : nlohmann::json(nullptr)},
+      {"metric", o.metric},
+      {"figure", baseline ? o.metric + " of " + o.technique + " minus " + o.metric + " of " + o.against
+                          : o.metric + " of " + o.technique},
+      {"budget", o.budget},
+      {"seed", o.seed},
+      {"size", o.common.size},
+      {"map_sizes", space.mapSizes},
+      {"elevation_deg", {space.elevationMin, space.elevationMax}},
+      {"camera", space.moveCamera ? "orbit" : "fixed"},
+      {"backend", context->description()},
+      {"cases", cases},
+  };
+  files.writeText("manifest.json", manifest.dump(2) + "\n");
+  files.commit();
+  (void)command;
+  std::cerr << "testbed: " << worst.size() << " worst of " << search.evaluated() << " configurations (worst "
+            << cases.front()["figure"].get<double>() << ") in " << oneLine(o.common.out) << "\n";
+  return 0;
+}
+
+}  // namespace
+
+CommandRunner addWorstCommand(CLI::App& app) {
+  auto options = std::make_shared<WorstOptions>();
+  auto* command = app.add_subcommand("worst", "search a scene's light, camera and map size for a technique's worst error");
+  command->add_option("--scene", options->scene, "scene file (JSON, still)")->required();
+  command->add_option("--technique", options->technique, "the technique whose error is maximized")->required();
+  command->add_option("--against", options->against, "maximize the error's excess over this technique's (e.g. sm)");
+  command->add_option("--metric", options->metric, "an error metric of the metric table")->capture_default_str();
+  command->add_option("--budget", options->budget, "configurations to render")->required();
+  command->add_option("--k", options->k, "how many of the worst to write")->capture_default_str();
+  command->add_option("--seed", options->seed, "random seed")->capture_default_str();
+  command->add_option("--elevation", options->elevation, "light elevation range MIN:MAX, degrees")->capture_default_str();
+  command->add_option("--map-sizes", options->mapSizes, "shadow-map sizes to try, comma-separated")->capture_default_str();
+  command->add_flag("--fixed-camera", options->fixedCamera, "keep the scene's camera (search the light and map only)");
+  options->common.addTo(*command);
+  return {command, [command, options]() { return runWorst(*command, *options); }};
+}
+
+}  // namespace testbed
