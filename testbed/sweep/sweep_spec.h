@@ -77,6 +77,9 @@ struct SweepSpec {
   // What the table's numbers are: a kSweepMeasure metric (frame_ms: the whole frame as the
   // papers measured it, G-buffer plus every pass of the technique; fps; memory_mb).
   const Metric* measure = &metric("frame_ms");
+  // "differences": true adds each row's difference to sm in the measure's unit (e.g. ms)
+  // beside its ratio: a fixed cost reads as a ratio only against a frame of known size.
+  bool differences = false;
   std::vector<SweepColumn> columns;
   std::vector<SweepRow> rows;
   SweepFigure figure;
