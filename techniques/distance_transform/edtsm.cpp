@@ -26,10 +26,10 @@ void EdtShadowMapping::configured() {
   rbsm_.configure(parameters_.rbsm);
 }
 
-void EdtShadowMapping::allocate(glm::ivec2 size) {
+void EdtShadowMapping::allocate(glm::ivec2 size, bool straightforward) {
   GpuMemoryLedger::Label label("edtsm-targets", ResourceRole::Paper);
   hard_.ensure({.size = size, .color = GL_RG32F});
-  if (parameters_.reference) seeds_.ensure({.size = size, .color = GL_R8});  // else the EDT tells them
+  if (straightforward) seeds_.ensure({.size = size, .color = GL_R8});  // else the EDT tells them
   intensity_.ensure({.size = size, .color = GL_RG32F});
   filtered_.ensure({.size = size, .color = GL_RG32F});
 }
@@ -61,7 +61,8 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
     filterRows_ = Program::compute("techniques/distance_transform/edtsm_mean_filter.comp");
     filterColumns_ = Program::compute("techniques/distance_transform/edtsm_mean_filter.comp", "#define COLUMNS 1\n");
   }
-  allocate(in.size);
+  const bool paper = in.path == TechniquePath::Paper;
+  allocate(in.size, parameters_.reference || paper);
   shadowMap_.render(in, timer);
   rbsm_.setPath(in.path);
   rbsmPass_.setDefines(rbsm_.libraryDefines());
@@ -79,14 +80,15 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
     program.set("uImproved", improved_ ? 1 : 0);
   };
   rbsmPass_.draw(in, VisibilityTarget{hard_.framebuffer(), hard_.color()}, timer, bindRbsm, "rbsm-classify", "rbsm");
-  if (parameters_.reference)
-    renderReference(in, timer, out);
+  if (parameters_.reference || paper)
+    renderReference(in, timer, out, paper);
   else
     renderFused(in, timer, out);
   rbsm_.renderDebug(in, shadowMap_.depth(), improved_);  // untimed
 }
 
-void EdtShadowMapping::renderReference(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
+void EdtShadowMapping::renderReference(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out,
+                                       bool bandedEdt) {
   {
     auto scope = timer.scope("seeds");
     bindScreenInputs(seedsProgram_, in);
@@ -96,13 +98,16 @@ void EdtShadowMapping::renderReference(const FrameInputs& in, PassTimer& timer, 
   }
   {
     auto scope = timer.scope("edt");
-    featureTransform_.run(seeds_.color(), in.size);
+    if (bandedEdt)
+      bandedTransform_.run(seeds_.color(), in.size);
+    else
+      featureTransform_.run(seeds_.color(), in.size);
   }
   {
     auto scope = timer.scope("penumbra");
     bindScreenInputs(penumbraProgram_, in);
     glBindTextureUnit(4, hard_.color().id());
-    glBindTextureUnit(5, featureTransform_.nearest().id());
+    glBindTextureUnit(5, (bandedEdt ? bandedTransform_.nearest() : featureTransform_.nearest()).id());
     penumbraProgram_.set("uHard", 4);
     penumbraProgram_.set("uNearestSeed", 5);
     penumbraProgram_.set("uPenumbra", parameters_.penumbra);

@@ -14,13 +14,16 @@
 //                tiles where it can change a pixel (edtsm_filter_tiles.h), each invocation
 //                four pixels of a line (edtsm_mean_filter.comp)
 // With `reference` set, the straightforward pipeline, same output: a full-screen pass per
-// step (`seeds`, `edt`, `penumbra`), both filter draws over the whole screen.
+// step (`seeds`, `edt`, `penumbra`), both filter draws over the whole screen. The paper path
+// (path.h) runs that pipeline, the paper's steps, with the EDT banded as the paper's
+// (feature_transform_banded.h).
 // EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
 // shadow mapping", Computers & Graphics 71 (2018).
 // GI 2017: Macedo & Apolinário, "Euclidean Distance Transform Shadow Mapping", Graphics Interface 2017.
 #include "techniques/distance_transform/edtsm_filter_tiles.h"
 #include "techniques/distance_transform/edtsm_penumbra_band.h"
 #include "techniques/distance_transform/feature_transform.h"
+#include "techniques/distance_transform/feature_transform_banded.h"
 #include "techniques/revectorization/revectorization_technique.h"
 #include "testbed/gl/render_target.h"
 #include "testbed/render/screen_pass.h"
@@ -49,13 +52,13 @@ class EdtShadowMapping : public WithParameters<EdtsmParameters> {
 
  private:
   void configured() override;
-  void allocate(glm::ivec2 size);
+  void allocate(glm::ivec2 size, bool straightforward);
   // Receivers, camera depth and the edge-awareness threshold of edtsm_screen.glsl.
   void bindScreenInputs(const Program& program, const FrameInputs& in) const;
   // The mean filter's uniforms; its input is bound at unit 4.
   void bindFilter(const Program& program, const FrameInputs& in) const;
   // What follows the seeds: the straightforward passes, or the fused, tiled ones.
-  void renderReference(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out);
+  void renderReference(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out, bool bandedEdt);
   void renderFused(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out);
 
   bool improved_;
@@ -63,6 +66,7 @@ class EdtShadowMapping : public WithParameters<EdtsmParameters> {
   ShadowMapPass shadowMap_;
   ScreenPass screen_;
   FeatureTransformPass featureTransform_;
+  BandedFeatureTransformPass bandedTransform_;  // the paper path's
   FilterTiles filterTiles_;
   PenumbraBand band_;
   revectorization::EdgeSplitPass rbsmPass_{"techniques/distance_transform/edtsm_rbsm.frag"};

@@ -73,6 +73,31 @@ TEST_F(Edtsm, FastPathMatchesTheReferencePipelineBitForBit) {
   }
 }
 
+// The paper path (the paper's steps, the EDT banded as PBA: feature_transform_banded.h)
+// against the fast path, bit for bit: every bundled scene at two sizes, default and
+// non-default parameters.
+TEST_F(Edtsm, PaperPathWithTheBandedEdtMatchesTheFastPathBitForBit) {
+  const std::vector<Assignments> variants{{}, {{"penumbra", "4"}, {"max_filter_radius", "3"}}, {{"penumbra", "80"}, {"filter_width", "0"}}};
+  for (const std::string name : {"bunny", "wall", "fence", "dragon_sun", "stacked_occluders"})
+    for (const glm::ivec2 size : {glm::ivec2(320, 180), glm::ivec2(283, 211)}) {
+      const Scene scene = test::bundledScene(name);
+      RenderSettings fastSettings = test::renderSettings(size, 256), paperSettings = fastSettings;
+      fastSettings.path = TechniquePath::Fast;
+      paperSettings.path = TechniquePath::Paper;
+      FrameRunner fast(scene, fastSettings), paper(scene, paperSettings);
+      for (const std::string id : {"edtsm", "edtsm-star"})
+        for (const Assignments& set : variants) {
+          const TechniqueRun onPaper = run(paper, id, set);
+          EXPECT_EQ(onPaper.times.order,
+                    (std::vector<std::string>{"shadow-map", "rbsm-classify", "rbsm", "seeds", "edt", "penumbra", "mean-filter"}));
+          const ImageF a = run(fast, id, set).visibility, b = onPaper.visibility;
+          ASSERT_EQ(a.pixels.size(), b.pixels.size());
+          EXPECT_EQ(std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)), 0)
+              << name << " " << size.x << "x" << size.y << " " << id << " variant " << (&set - variants.data());
+        }
+    }
+}
+
 // Without a penumbra and a filter, EDTSM is its RBSM: edtsm = smsr, edtsm-star = smsr
 // improved, pixel for pixel.
 TEST_F(Edtsm, WithoutPenumbraItIsRbsm) {

@@ -1,7 +1,10 @@
-// The GPU feature transform against a brute-force CPU nearest-seed search: for every pixel
+// The GPU feature transforms against a brute-force CPU nearest-seed search: for every pixel
 // the returned coordinate must be a seed and its squared distance must equal the exact
-// minimum (ties may pick either seed, so coordinates themselves are not compared).
+// minimum. The banded transform (PBA's shape) must moreover return the two-pass one's seed
+// exactly, the least (distance², row, column), which EDTSM's bit-identical paths rely on, at
+// any band width.
 #include "techniques/distance_transform/feature_transform.h"
+#include "techniques/distance_transform/feature_transform_banded.h"
 
 #include <gtest/gtest.h>
 
@@ -14,6 +17,7 @@
 #include <vector>
 
 #include "testbed/core/error.h"
+#include "testbed/gl/pass_timer.h"
 #include "tests/gl_fixture.h"
 
 namespace testbed {
@@ -70,8 +74,27 @@ Texture upload(const Mask& m, GLenum format) {
   return t;
 }
 
+// The least (distance², row, column) seed of every pixel, (-1, -1) without seeds.
+std::vector<glm::ivec2> bruteForceSeed(const Mask& m) {
+  std::vector<glm::ivec2> seeds;
+  for (int y = 0; y < m.height; ++y)
+    for (int x = 0; x < m.width; ++x)
+      if (m.at(x, y)) seeds.push_back({x, y});  // in (row, column) order
+  std::vector<glm::ivec2> best(std::size_t(m.width) * m.height, glm::ivec2(-1));
+  for (int y = 0; y < m.height; ++y)
+    for (int x = 0; x < m.width; ++x) {
+      std::int64_t d2 = std::numeric_limits<std::int64_t>::max();
+      for (const glm::ivec2 s : seeds) {
+        const std::int64_t d = std::int64_t(s.x - x) * (s.x - x) + std::int64_t(s.y - y) * (s.y - y);
+        if (d < d2) d2 = d, best[std::size_t(y) * m.width + x] = s;  // strict: the first in order keeps a tie
+      }
+    }
+  return best;
+}
+
 // Runs `pass` on the mask and checks every pixel; returns the number of wrong pixels.
-int checkAgainstBruteForce(FeatureTransformPass& pass, const Mask& m, GLenum format = GL_R8) {
+template <class Pass>
+int checkAgainstBruteForce(Pass& pass, const Mask& m, GLenum format = GL_R8) {
   const Texture seeds = upload(m, format);
   pass.run(seeds, {m.width, m.height});
   const std::vector<glm::ivec2> nearest = pass.readNearest();
@@ -190,6 +213,110 @@ TEST_F(FeatureTransform, OutputAndScratchAreBookedInTheLedger) {
     EXPECT_EQ(ledger.bytes(), 50u * 40u * 20u);
   }
   EXPECT_EQ(ledger.bytes(), 0u);
+}
+
+// Every band width, including one pixel, one wider than the image and widths that leave a
+// partial band; sizes with one row or column; densities from none to every pixel. The
+// brute-force least (distance², row, column) seed is the expected answer of both transforms.
+TEST_F(FeatureTransform, BandedReturnsTheTwoPassSeedAndTheLeastTiedOne) {
+  const glm::ivec2 sizes[] = {{1, 1}, {1, 37}, {53, 1}, {97, 61}, {160, 90}};
+  const double densities[] = {0.0, 0.0005, 0.01, 0.3, 1.0};
+  std::vector<BandedFeatureTransformPass> banded;
+  for (const int band : {1, 3, 8, 64, 200}) banded.emplace_back(band);
+  unsigned salt = 500;
+  for (const glm::ivec2 size : sizes)
+    for (const double density : densities) {
+      const Mask m = randomMask(size.x, size.y, density, ++salt);
+      const Texture seeds = upload(m, GL_R8);
+      const std::vector<glm::ivec2> expected = bruteForceSeed(m);
+      pass_.run(seeds, size);
+      const auto mismatches = [&](const std::vector<glm::ivec2>& got) {
+        int n = 0;
+        for (std::size_t i = 0; i < got.size(); ++i) n += got[i] != expected[i];
+        return n;
+      };
+      const std::string where = std::to_string(size.x) + "x" + std::to_string(size.y) + " density " + std::to_string(density);
+      EXPECT_EQ(mismatches(pass_.readNearest()), 0) << where << " two-pass";
+      for (auto& b : banded) {
+        b.run(seeds, size);
+        EXPECT_EQ(mismatches(b.readNearest()), 0) << where << " banded, band " << (&b - banded.data());
+      }
+    }
+}
+
+// Ties everywhere (a seed grid), a circle outline and a single seed in a far corner.
+TEST_F(FeatureTransform, BandedStructuredMasks) {
+  BandedFeatureTransformPass banded;
+  Mask grid = randomMask(320, 180, 0.0, 0);
+  for (int y = 3; y < grid.height; y += 6)
+    for (int x = 0; x < grid.width; x += 8) grid.seed[std::size_t(y) * grid.width + x] = 1;
+  Mask circle = randomMask(320, 180, 0.0, 0);
+  for (int y = 0; y < circle.height; ++y)
+    for (int x = 0; x < circle.width; ++x) {
+      const int r2 = (x - 150) * (x - 150) + (y - 80) * (y - 80);
+      circle.seed[std::size_t(y) * circle.width + x] = r2 >= 60 * 60 && r2 < 61 * 61;
+    }
+  Mask corner = randomMask(640, 360, 0.0, 0);
+  corner.seed[std::size_t(359) * 640 + 639] = 1;
+  for (const Mask* m : {&grid, &circle, &corner}) {
+    EXPECT_EQ(checkAgainstBruteForce(banded, *m), 0);
+    checkAgainstBruteForce(pass_, *m);
+    EXPECT_TRUE(banded.readNearest() == pass_.readNearest());
+  }
+}
+
+// The point of the banded shape: at 1280×720 each phase dispatches at least 64 k
+// invocations (counted by the GL's pipeline statistics), where the two-pass transform
+// dispatches one a row, then one a column.
+TEST_F(FeatureTransform, BandedDispatchesSixtyFourThousandInvocationsAPhase) {
+  if (!workCountersAvailable()) GTEST_SKIP() << "no pipeline statistics on this GL";
+  const Texture seeds = upload(randomMask(1280, 720, 0.0005, 7), GL_R8);
+  GLuint query = 0;
+  glGenQueries(1, &query);
+  const auto count = [&] {
+    glEndQuery(GL_COMPUTE_SHADER_INVOCATIONS_ARB);
+    GLuint64 n = 0;
+    glGetQueryObjectui64v(query, GL_QUERY_RESULT, &n);
+    return n;
+  };
+  BandedFeatureTransformPass banded;
+  std::vector<GLuint64> phases;
+  glBeginQuery(GL_COMPUTE_SHADER_INVOCATIONS_ARB, query);
+  banded.run(seeds, {1280, 720}, [&](int phase) {
+    phases.push_back(count());
+    if (phase < 3) glBeginQuery(GL_COMPUTE_SHADER_INVOCATIONS_ARB, query);
+  });
+  glBeginQuery(GL_COMPUTE_SHADER_INVOCATIONS_ARB, query);
+  pass_.run(seeds, {1280, 720});
+  const GLuint64 twoPass = count();
+  glDeleteQueries(1, &query);
+  ASSERT_EQ(phases.size(), 3u);
+  std::printf("1280x720 compute invocations: banded phases %llu, %llu, %llu; two-pass total %llu\n",
+              (unsigned long long)phases[0], (unsigned long long)phases[1], (unsigned long long)phases[2],
+              (unsigned long long)twoPass);
+  for (const GLuint64 n : phases) EXPECT_GE(n, 65536u);
+  EXPECT_LT(twoPass, 65536u / 16u);  // 64-wide groups over 720 rows and 1280 columns
+}
+
+TEST_F(FeatureTransform, BandedBooksItsImagesAndRejectsBadSizes) {
+  const Texture seeds = upload(randomMask(97, 61, 0.01, 3), GL_R8);
+  GpuMemoryLedger ledger;
+  {
+    GpuMemoryLedger::Scope booking(ledger);
+    BandedFeatureTransformPass pass(8);
+    pass.run(seeds, {97, 61});
+    // Per pixel: the RG32I output and links (8 bytes each), the row pass's R32I (4); per
+    // row band (13 × 61): two RG32I; per column band (97 × 8): an RG32I and an R32I.
+    const std::size_t expected = 97u * 61u * 20u + 13u * 61u * 16u + 97u * 8u * 12u;
+    EXPECT_EQ(ledger.bytes(), expected);
+    pass.run(seeds, {97, 61});
+    EXPECT_EQ(ledger.bytes(), expected);
+  }
+  EXPECT_EQ(ledger.bytes(), 0u);
+  BandedFeatureTransformPass pass;
+  EXPECT_THROW(pass.run(seeds, {0, 8}), GlError);
+  EXPECT_THROW(pass.run(seeds, {98, 8}), GlError);
+  EXPECT_THROW(BandedFeatureTransformPass(0), GlError);
 }
 
 TEST_F(FeatureTransform, RejectsBadSizes) {

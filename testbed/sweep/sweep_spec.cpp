@@ -397,7 +397,7 @@ SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneF
   spec.file = file;
   spec.document = document;
   r.keys(document, "", {"name", "title", "citation", "comment", "note", "scenes", "scene_order", "settings", "measure",
-                        "frames", "columns", "axes", "rows", "techniques", "figure"});
+                        "frames", "columns", "axes", "rows", "techniques", "figure", "differences"});
   for (const char* required : {"name", "scenes"})
     if (!document.contains(required)) r.fail(required, "missing (required)");
   if (document.contains("columns") == document.contains("axes"))
@@ -412,6 +412,10 @@ SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneF
   if (document.contains("title")) spec.title = r.text(document["title"], "title");
   if (document.contains("note")) spec.note = r.text(document["note"], "note");
   if (document.contains("comment")) r.text(document["comment"], "comment");
+  if (document.contains("differences")) {
+    if (!document["differences"].is_boolean()) r.fail("differences", "expected true or false");
+    spec.differences = document["differences"].get<bool>();
+  }
 
   const json& scenes = document["scenes"];
   std::vector<std::string> sceneOrder;  // the scene axis's order

@@ -99,6 +99,9 @@ struct SweepSpec {
   SweepMeasure measure{"frame_ms", &metric("frame_ms"), ""};
   // "all" or "A:B[:STEP]" (as --frames): every cell runs over these frames of its scene.
   std::optional<std::string> frames;
+  // "differences": true adds each row's difference to sm in the measure's unit (e.g. ms)
+  // beside its ratio: a fixed cost reads as a ratio only against a frame of known size.
+  bool differences = false;
   std::vector<SweepColumn> columns;
   std::vector<SweepRow> rows;
   SweepFigure figure;

@@ -60,6 +60,11 @@ std::optional<double> costRatio(std::optional<double> value, std::optional<doubl
   return measure.better() == Better::Higher ? *baseline / *value : *value / *baseline;
 }
 
+std::optional<double> difference(std::optional<double> value, std::optional<double> baseline) {
+  if (!value || !baseline) return std::nullopt;
+  return *value - *baseline;
+}
+
 bool isSmRow(const SweepRow& row) { return row.techniques == std::vector<std::string>{"sm"} && !row.passes; }
 
 std::string number(std::optional<double> value, int decimals) {
@@ -98,7 +103,7 @@ SweepTable buildSweepTable(const SweepSpec& spec, const SweepPlan& plan, const s
     table.backend = backend;
   }
   for (std::size_t r = 0; r < spec.rows.size(); ++r) {
-    SweepTableRow row{spec.rows[r].group, spec.rows[r].label, spec.rows[r].notMeasured, {}, spec.rows[r].paper, {}, {}};
+    SweepTableRow row{spec.rows[r].group, spec.rows[r].label, spec.rows[r].notMeasured, {}, spec.rows[r].paper, {}, {}, {}, {}};
     for (std::size_t c = 0; c < spec.columns.size(); ++c) {
       std::optional<double> value;
       if (!plan.entries[r][c].empty()) {
@@ -137,8 +142,11 @@ SweepTable buildSweepTable(const SweepSpec& spec, const SweepPlan& plan, const s
                              plan.cells[ours.front()].frameKey() == plan.cells[base.front()].frameKey();
       row.oursRatio.push_back(sameFrame ? costRatio(row.ours[c], table.rows[*baseline].ours[c], spec.measure) : std::nullopt);
       row.paperRatio.push_back(costRatio(row.paper[c], table.rows[*baseline].paper[c], spec.measure));
+      row.oursDifference.push_back(sameFrame ? difference(row.ours[c], table.rows[*baseline].ours[c]) : std::nullopt);
+      row.paperDifference.push_back(difference(row.paper[c], table.rows[*baseline].paper[c]));
     }
   }
+  table.hasDifferences = spec.differences && table.hasRatios;
   return table;
 }
 
@@ -157,6 +165,7 @@ std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& heade
     md << (table.errorMeasure ? " `×SM`: error relative to shadow mapping in the same column"
                               : " `×SM`: cost relative to shadow mapping in the same column (time, or memory)")
        << (anyPaper ? ", ours against ours and the paper's against the paper's." : ".");
+  if (table.hasDifferences) md << " `−SM`: the difference to shadow mapping in the same column, in " << table.unit << ".";
   md << "\n\n";
   for (const auto& [name, value] : header) md << "- " << name << ": " << value << "\n";
   if (!header.empty()) md << "\n";
@@ -174,6 +183,12 @@ std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& heade
     for (std::size_t c = 0; c < table.columns.size(); ++c) {
       md << " " << table.columns[c] << (anyPaper ? " ours" : "") << " ×SM |";
       if (paperShown(c)) md << " " << table.columns[c] << " paper ×SM |";
+      n += paperShown(c) ? 2 : 1;
+    }
+  if (table.hasDifferences)
+    for (std::size_t c = 0; c < table.columns.size(); ++c) {
+      md << " " << table.columns[c] << (anyPaper ? " ours" : "") << " −SM |";
+      if (paperShown(c)) md << " " << table.columns[c] << " paper −SM |";
       n += paperShown(c) ? 2 : 1;
     }
   md << "\n|" << (groups ? "---|" : "") << "---|";
@@ -195,6 +210,11 @@ std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& heade
         md << " " << number(row.oursRatio[c], 2) << " |";
         if (paperShown(c)) md << " " << number(row.paperRatio[c], 2) << " |";
       }
+    if (table.hasDifferences)
+      for (std::size_t c = 0; c < table.columns.size(); ++c) {
+        md << " " << number(row.oursDifference[c], table.digits) << " |";
+        if (paperShown(c)) md << " " << number(row.paperDifference[c], table.digits) << " |";
+      }
     md << "\n";
   }
   std::set<std::string> footnotes;  // each row label and reason once, however many groups repeat it
@@ -210,13 +230,18 @@ json sweepTableJson(const SweepTable& table, const SweepHeader& header) {
     rows.push_back({{"group", row.group}, {"label", row.label}, {"not_measured", row.notMeasured},
                     {"ours", optionals(row.ours)}, {"paper", optionals(row.paper)},
                     {"ours_ratio", optionals(row.oursRatio)}, {"paper_ratio", optionals(row.paperRatio)}});
+  if (table.hasDifferences)
+    for (std::size_t r = 0; r < table.rows.size(); ++r) {
+      rows[r]["ours_difference"] = optionals(table.rows[r].oursDifference);
+      rows[r]["paper_difference"] = optionals(table.rows[r].paperDifference);
+    }
   json head = json::object();
   for (const auto& [name, value] : header) head[name] = value;
   const bool anyPaper = std::find(table.paperColumns.begin(), table.paperColumns.end(), true) != table.paperColumns.end();
   return {{"name", table.name},       {"title", table.title}, {"citation", table.citation},
           {"unit", table.unit},       {"measure", table.measure}, {"backend", table.backend},
           {"columns", table.columns}, {"paper_columns", table.paperColumns}, {"has_paper", anyPaper},
-          {"has_ratios", table.hasRatios}, {"rows", rows}, {"header", head}};
+          {"has_ratios", table.hasRatios}, {"has_differences", table.hasDifferences}, {"rows", rows}, {"header", head}};
 }
 
 }  // namespace testbed

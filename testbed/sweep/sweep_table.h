@@ -18,6 +18,7 @@ namespace testbed {
 struct SweepTableRow {
   std::string group, label, notMeasured;
   std::vector<std::optional<double>> ours, paper, oursRatio, paperRatio;
+  std::vector<std::optional<double>> oursDifference, paperDifference;  // minus sm's; with SweepTable::hasDifferences
 };
 
 struct SweepTable {
@@ -31,6 +32,7 @@ struct SweepTable {
   std::vector<SweepTableRow> rows;
   int digits = 2;          // decimals of the measure (the metric table's)
   bool hasRatios = false;  // false when the table has no `sm` row to divide by
+  bool hasDifferences = false;  // the spec's "differences", where there are ratios
 };
 
 // Lines above the table naming how it was made (command, machine, backend, build).

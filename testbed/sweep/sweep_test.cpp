@@ -204,6 +204,30 @@ TEST(SweepTable, MeansRatiosAndPasses) {
   EXPECT_THROW(buildSweepTable(bad, planSweep(bad, {}), records), InputError);
 }
 
+// "differences": each row minus its sm row in the measure's unit, ours and the paper's,
+// beside the ratio.
+TEST(SweepTable, DifferencesToSm) {
+  json document = tinySpec();
+  document["differences"] = true;
+  const SweepSpec spec = parseSweepSpec(document, kSpecFile);
+  const SweepPlan plan = planSweep(spec, {});
+  std::map<std::size_t, Record> records;
+  const std::map<std::string, double> ms = {{"sm", 2}, {"vsm", 4}, {"esm", 8}, {"pcf", 6}, {"groundtruth", 20}};
+  for (std::size_t i = 0; i < plan.cells.size(); ++i) {
+    records[i] = fakeRecord(plan.cells[i], ms.at(plan.cells[i].technique), 1, 1 << 20);
+  }
+  const SweepTable table = buildSweepTable(spec, plan, records);
+  ASSERT_TRUE(table.hasDifferences);
+  EXPECT_DOUBLE_EQ(*table.rows[1].oursDifference[0], (5.0 + 9.0) / 2 - 3.0);
+  EXPECT_DOUBLE_EQ(*table.rows[1].paperDifference[0], *table.rows[1].paper[0] - *table.rows[0].paper[0]);
+  EXPECT_DOUBLE_EQ(*table.rows[0].oursDifference[0], 0.0);
+  const std::string md = sweepTableMarkdown(table, {});
+  EXPECT_NE(md.find(" −SM |"), std::string::npos);
+  EXPECT_FALSE(buildSweepTable(parseSweepSpec(tinySpec(), kSpecFile), plan, records).hasDifferences);
+  document["differences"] = "yes";
+  EXPECT_THROW(parseSweepSpec(document, kSpecFile), InputError);
+}
+
 TEST(SweepTable, MarkdownHasThePapersRowsAndColumns) {
   const SweepSpec spec = parseSweepSpec(tinySpec(), kSpecFile);
   const SweepTable table = buildSweepTable(spec, planSweep(spec, {}), {});
@@ -238,6 +262,10 @@ TEST(SweepPaperSpecs, EachTableHasThePapersShape) {
       {"edtsm-star-table2", 18, 3},  // Table 2: × 480p, 720p, 1080p
       {"edtsm-star-table3", 18, 4},  // Table 3: × kernel 7², 15², 23², 31²
       {"edtsm-star-table4", 21, 3},  // Table 4: 3 scenes × 7 steps × 480p, 720p, 1080p
+      // Macedo, Teixeira, Apolinário & Agüero, "Hard Shadow Anti-Aliasing for Spot Lights in
+      // a Game Engine": 3 of its 7 figures (stand-ins) × SM, RBSM.
+      {"unity-spot-table3", 6, 4},  // Table 3: × 256²..2048² at 1080p
+      {"unity-spot-table4", 6, 3},  // Table 4: × 720p, 1080p, 2160p at 2048²
   };
   std::set<std::string> listed;
   for (const auto& shape : shapes) {
