@@ -660,8 +660,8 @@ class Parser {
         }
       }
       if (!(3 * scale * reach + translate <= kMaxPlacedCoordinate))
-        fail(key[i], "transformed coordinates could exceed " + show(kMaxPlacedCoordinate) +
-                         " between keys and not be finite (scale or translate too large?)");
+        fail(key[i], "transformed coordinates could be not finite between keys (beyond " +
+                         show(kMaxPlacedCoordinate) + "; scale or translate too large?)");
     }
   }
 
