@@ -44,4 +44,4 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1${UBSAN_OPTIONS:+:$UBSAN
 # Only the GoogleTest tests (named Suite.Test): the Python and browser tests run no
 # sanitized code.
 ctest --test-dir "$build_dir" --output-on-failure -j"$jobs" --timeout 1800 \
-  -R '^[A-Za-z0-9_]+\.[A-Za-z0-9_/]+$' -E '^Docs\.|^Plugin\.ShaderMissing' "$@"
+  -R '^[A-Za-z0-9_/]+\.[A-Za-z0-9_/]+$' -E '^Docs\.|^Plugin\.ShaderMissing' "$@"
