@@ -202,6 +202,29 @@ TEST(AnimationHostile, RefusesBadBlocksNamingTheKeyPath) {
         d["animation"]["objects"][0]["keys"][1]["scale"] = 3e38;
       },
                 "animation.objects[0]", "not finite");
+  // Finite at both keys, but a box 2e37 long swung through 180° about Y stands along Z
+  // halfway, where 1.6e38 + 2e38 overflows: found by fuzz/animation_fuzz.cpp, refused
+  // before the first frame instead of failing at frame 1.
+  expectRefused(
+      [](json& d) {
+        d["objects"][0] = json::parse(R"({"primitive": "box", "size": [16, 0.6, 3]})");
+        d["animation"]["objects"][0]["keys"] = json::parse(
+            R"([{"frame": 0, "scale": 2e37, "rotate": [0, 0, 0], "translate": [0, 0, 2e38]},
+                {"frame": 2, "rotate": [0, 180, 0]}])");
+      },
+      "animation.objects[0]", "between keys");
+}
+
+// The bound that refuses the case above lets every scene of sensible size through: a
+// unit box swung through 180° while it grows a thousandfold and moves 1e6 away.
+TEST(Animation, LargeButSensiblePlacementsPlayEveryFrame) {
+  json d = animatedScene();
+  d["animation"]["objects"][0]["keys"] = json::parse(
+      R"([{"frame": 0, "scale": 1, "rotate": [0, 0, 0]},
+          {"frame": 20, "scale": 1000, "rotate": [0, 180, 0], "translate": [1e6, 0, 0]}])");
+  Scene scene = parse(d);
+  for (int frame = 0; frame < 21; ++frame) EXPECT_NO_THROW(applyFrame(scene, frame)) << frame;
+  expectVec(centre(scene.objects[0].mesh), {1e6f, 0, 0}, 1.0f);
 }
 
 }  // namespace

@@ -346,6 +346,42 @@ void checkVertexLines(const fs::path& file, const std::string& keyword) {
   }
 }
 
+// An OBJ index: an optional '-' and decimal digits, nothing else.
+bool objIndex(const std::string& part) {
+  const std::size_t sign = part.rfind('-', 0) == 0 ? 1 : 0;
+  return part.size() > sign &&
+         std::all_of(part.begin() + std::ptrdiff_t(sign), part.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// OBJ face corners, which OpenMesh reads leniently: it takes whatever digits lead a corner
+// ("1.5" and "1x" read as 1) and aborts the whole process (a failed assertion in Debian's
+// build) on a face whose corners all start with '/' ("f /1/ 2 3", found by
+// fuzz/mesh_fuzz.cpp). So every corner must be V, V/, V/T, V/T/N or V//N with integer
+// indices. An index past the vertices stays OpenMesh's to drop with its face, as OBJ
+// readers do (assimp's invalid/malformed*.obj rely on it).
+void checkObjFaces(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::string line, word;
+  for (std::uint64_t number = 1; std::getline(in, line); ++number) {
+    std::istringstream words(line);
+    if (!(words >> word) || word != "f") continue;
+    for (std::string corner; words >> corner;) {
+      std::vector<std::string> parts(1);
+      for (char c : corner) {
+        if (c == '/')
+          parts.emplace_back();
+        else
+          parts.back().push_back(c);
+      }
+      bool ok = parts.size() <= 3 && objIndex(parts[0]);
+      for (std::size_t i = 1; ok && i < parts.size(); ++i) ok = parts[i].empty() || objIndex(parts[i]);
+      if (!ok)
+        fail(file, "line " + std::to_string(number) + ": face corner " + quote(corner) +
+                       " is not V, V/T, V/T/N or V//N with integer indices");
+    }
+  }
+}
+
 // Binary STL: 80-byte header, a count, then 50 bytes per triangle (normal, 3 vertices,
 // attribute). OpenMesh drops a triangle with a NaN corner without a word, which made a
 // file of them "a file with no triangles"; the corners are checked here instead.
@@ -437,7 +473,10 @@ TriMesh readMeshFile(const fs::path& file) {
   if (!stlTriangles) checkTextEncoding(file, ext == ".off" || ext == ".ply");
   if (ext == ".off") checkOff(file, size);
   if (ext == ".ply") checkPly(file, size);
-  if (ext == ".obj") checkVertexLines(file, "v");
+  if (ext == ".obj") {
+    checkVertexLines(file, "v");
+    checkObjFaces(file);
+  }
   if (ext == ".stl" && !stlTriangles) checkVertexLines(file, "vertex");
   if (stlTriangles) checkBinaryStl(file, *stlTriangles);
 

@@ -69,6 +69,21 @@ TEST_F(MeshIo, ReadsObjAndTriangulatesQuads) {
   expectUnitNormals(mesh);
 }
 
+// OpenMesh aborts the process on a face whose corners start with '/' (fuzz/mesh_fuzz.cpp
+// found it; fuzz/corpus/fuzz_mesh_obj/regression-*) and reads "1.5" or "1x" as 1: each is
+// refused, naming the line and the corner.
+TEST_F(MeshIo, ObjFaceCornersThatAreNotIndicesThrow) {
+  const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  expectError(write("slash.obj", triangle + "f /1/ 2 3\n"), "line 4: face corner \"/1/\"");
+  expectError(write("fuzzed.obj", std::string("# t 4/1\nf /-4/ 3\n1//1\xff\xff\xff\xff", 25)), "line 2");
+  expectError(write("fraction.obj", triangle + "f 1.5 2 3\n"), "\"1.5\" is not V, V/T, V/T/N or V//N");
+  expectError(write("suffix.obj", triangle + "f 1 2x 3\n"), "\"2x\"");
+  expectError(write("four-parts.obj", triangle + "f 1/1/1/1 2 3\n"), "\"1/1/1/1\"");
+  // Every form OBJ allows reads.
+  EXPECT_EQ(readMeshFile(write("forms.obj", triangle + "vt 0 0\nvn 0 0 1\nf 1/1 2/1/1 -1//1\nf 1/ 2 3\n")).n_faces(),
+            2u);
+}
+
 TEST_F(MeshIo, KeepsDegenerateTriangles) {
   // (0 1 3) is collinear: kept, with a finite normal for the ground truth to cope with.
   const TriMesh mesh = readMeshFile(

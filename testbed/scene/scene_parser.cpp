@@ -627,19 +627,41 @@ class Parser {
     }
   }
 
-  // Every key's placement must be finite; linear values in between then are too.
+  // Every frame's placement must be finite, not only the keys': a rotation between two keys
+  // turns the mesh, so a coordinate can be largest at no key (a long box swung through
+  // 90°). One bound covers every frame: |R·S·q + t| ≤ max|S|·|q| + |t| for each fitted
+  // vertex q, where scale and translate, interpolated linearly, never exceed their largest
+  // key (or the scene's value where a track has no key). The bound is taken on |fit|·|p|
+  // term by term and with room to spare, since the float matrix products add terms of that
+  // size before they cancel.
   void checkAnimatedObjects(Animation& a, const std::vector<SceneObject>& objects, const Key& key) const {
+    constexpr double kMaxPlacedCoordinate = std::numeric_limits<float>::max() / 64.0;
     for (std::size_t i = 0; i < a.objects.size(); ++i) {
       ObjectAnimation& track = a.objects[i];
       const SceneObject& object = objects[track.object];
       track.base = object.pose;
-      for (const auto* keys : {&track.scale.keys, &track.rotate.keys, &track.translate.keys})
-        for (const auto& [frame, unused] : *keys) {
-          TriMesh placed;
-          if (!placeMesh(*object.local, poseAt(track, frame).matrix() * object.fit, placed))
-            fail(key[i], "transformed coordinates at frame " + std::to_string(frame) +
-                             " are not finite (scale or translate too large?)");
+      double scale = 0, translate = 0;
+      auto largest = [](double& out, const Track<glm::vec3>& t, glm::vec3 fallback) {
+        auto grow = [&out](glm::vec3 v) {
+          for (int c = 0; c < 3; ++c) out = std::max(out, std::abs(double(v[c])));
+        };
+        if (t.empty()) grow(fallback);
+        for (const auto& [frame, value] : t.keys) grow(value);
+      };
+      largest(scale, track.scale, track.base.scale);
+      largest(translate, track.translate, track.base.translate);
+      double reach = 0;  // largest coordinate of |fit|·(|p|, 1) over the mesh
+      for (const auto v : object.local->vertices()) {
+        const auto& p = object.local->point(v);
+        for (int r = 0; r < 3; ++r) {
+          double sum = std::abs(double(object.fit[3][r]));
+          for (int c = 0; c < 3; ++c) sum += std::abs(double(object.fit[c][r])) * std::abs(double(p[c]));
+          reach = std::max(reach, sum);
         }
+      }
+      if (!(3 * scale * reach + translate <= kMaxPlacedCoordinate))
+        fail(key[i], "transformed coordinates could be not finite between keys (beyond " +
+                         show(kMaxPlacedCoordinate) + "; scale or translate too large?)");
     }
   }
 

@@ -128,7 +128,8 @@ const std::string& ParameterSet::getChoice(std::string_view name) const {
 
 nlohmann::json ParameterSet::toJson() const {
   nlohmann::json out = nlohmann::json::object();
-  for (const auto& [name, value] : values_) std::visit([&](const auto& v) { out[name] = v; }, value);
+  // An explicit capture: clang before 16 cannot capture a structured binding.
+  for (const auto& [name, value] : values_) std::visit([&out, &key = name](const auto& v) { out[key] = v; }, value);
   return out;
 }
 
