@@ -265,12 +265,6 @@ class Parser {
     if (!(std::abs(ndcDepth(n) + 1.0f) < 1e-3f && std::abs(ndcDepth(f) - 1.0f) < 1e-3f))
       fail(key / "far", "near " + show(n) + " and far " + show(f) +
                             " overflow the float projection matrix (use planes nearer to the scene's scale)");
-    // A view direction from two points that differ only in their last bits is noise.
-    const glm::vec3 view = camera.target - camera.eye;
-    const float scale = std::max(glm::length(camera.eye), glm::length(camera.target));
-    if (!(glm::length(view) > 1e-5f * scale) || !std::isnormal(glm::dot(view, view)))
-      fail(key / "target", "is only " + show(glm::length(glm::dvec3(camera.target) - glm::dvec3(camera.eye))) +
-                               " from camera.eye: too close to give a view direction in float precision");
     // The view transform subtracts the eye from every vertex in float: once float spacing at
     // the eye's coordinates reaches the near distance, nothing in front of the camera keeps
     // its place (an eye at 1e30 renders an empty image).
@@ -280,6 +274,12 @@ class Parser {
       fail(key / "eye", "coordinates as large as " + show(reach) + " are " + show(spacing) +
                             " apart in float, not finer than near (" + show(n) +
                             "): nothing in front of the camera keeps its place (bring the scene nearer the origin)");
+    // A view direction from two points that differ only in their last bits is noise.
+    const glm::vec3 view = camera.target - camera.eye;
+    const float scale = std::max(glm::length(camera.eye), glm::length(camera.target));
+    if (!(glm::length(view) > 1e-5f * scale) || !std::isnormal(glm::dot(view, view)))
+      fail(key / "target", "is only " + show(glm::length(glm::dvec3(camera.target) - glm::dvec3(camera.eye))) +
+                               " from camera.eye: too close to give a view direction in float precision");
     // Beyond far, the point the camera is aimed at is clipped away with everything around it.
     if (glm::length(view) > f)
       fail(key / "target", "is " + show(glm::length(view)) + " from camera.eye, beyond far (" + show(f) +

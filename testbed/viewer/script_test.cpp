@@ -120,7 +120,7 @@ TEST(ViewerScript, CameraMovesThatLeaveARenderableViewAreRefused) {
     return std::string("(accepted)");
   };
   EXPECT_EQ(errorFrom("orbit 720 -30\npan 300 -200\nzoom 5\nzoom 0.001\n"), "(accepted)");
-  EXPECT_EQ(errorFrom("orbit 10 0\nzoom 1e30\n").rfind("m.txt:2: zoom: camera.eye: ", 0), 0u) << errorFrom("zoom 1e30\n");
+  EXPECT_EQ(errorFrom("orbit 10 0\nzoom 1e30\n").rfind("m.txt:2: zoom: camera.eye: ", 0), 0u) << errorFrom("orbit 10 0\nzoom 1e30\n");
   // Zoom to 20× the distance of 58: the target lies beyond far (500), the image would be empty.
   EXPECT_EQ(errorFrom("zoom 20\n").rfind("m.txt:1: zoom: camera.target: ", 0), 0u) << errorFrom("zoom 20\n");
   // A pan of 1e30 pixels moves eye and target together out to where they round to one point.
