@@ -150,6 +150,31 @@ TEST(HostileScene, DegenerateCameraValuesNameTheFieldAndTheReason) {
   });
 }
 
+// Finite but huge camera placements: before these checks they rendered an empty image with
+// exit 0. The eye where float spacing reaches the near plane, a target beyond far, and the
+// same through animation keys (checked at every frame, the frame named).
+TEST(HostileScene, HugeCameraPlacementsAreRefusedBeforeRendering) {
+  auto animated = [&](const std::string& keys) {
+    std::string text = sceneText();
+    text.insert(text.size() - 1, R"(, "animation": {"frames": 4, "camera": )" + keys + "}");
+    return text;
+  };
+  expectAllRejected({
+      {"eye at 1e30", sceneText(camera(R"("eye": [0, 1e30, -45], "target": [0, 0, 5])")), "camera.eye"},
+      {"eye where float spacing is 2 (near 1)", sceneText(camera(R"("eye": [0, 2e7, 0], "target": [0, 0, 5], "up": [0, 0, 1])")),
+       "camera.eye"},
+      {"target beyond far", sceneText(camera(R"("eye": [0, 30, -45], "target": [0, 0, 5000], "far": 500)")),
+       "camera.target"},
+      {"animation key with the eye at 1e30",
+       animated(R"([{"frame": 0, "eye": [0, 30, -45]}, {"frame": 3, "eye": [0, 30, -1e30]}])"), "animation.camera.eye"},
+      {"animation key with the target onto the eye",
+       animated(R"([{"frame": 0, "target": [0, 0, 5]}, {"frame": 2, "target": [0, 30, -45]}])"),
+       "animation.camera.target"},
+      {"animation key with the target beyond far",
+       animated(R"([{"frame": 0, "target": [0, 0, 5]}, {"frame": 3, "target": [0, 0, 4000]}])"), "at frame"},
+  });
+}
+
 TEST(HostileScene, StructureAndRanges) {
   const std::string cam = R"({"eye": [0, 30, -45], "target": [0, 0, 5]})";
   expectAllRejected({

@@ -93,6 +93,26 @@ TEST(CliSweep, WholeRunWritesRecordsTableAndFigure) {
     EXPECT_TRUE(fs::exists(tmp / "out" / file)) << file;
 }
 
+// The plots are staged with the tables: when matplotlib fails (here a $TESTBED_PYTHON that
+// exits 1), nothing is committed rather than tables without their plots, and the line says
+// which table and how to go without plots. The cells stay saved for the rerun.
+TEST(CliSweep, AFailingPlotCommitsNothing) {
+  TempDir tmp("sweep-plot-fails");
+  const fs::path out = tmp / "out";
+  const RunResult run = runTestbed({"sweep", "--spec", tinySpecFile().string(), "--out", out.string()},
+                                   {.cwd = {}, .env = {{"TESTBED_PYTHON", "/bin/false"}}});
+  EXPECT_EQ(run.exitCode, 1) << run.describe();
+  EXPECT_NE(run.err.find("sweep_plot.py failed on " + (out / "tiny.json").string()), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("--no-plot skips plots"), std::string::npos) << run.err;
+  for (const char* file : {"tiny.md", "tiny.json", "tiny.png", "records.json", "index.html"})
+    EXPECT_FALSE(fs::exists(out / file)) << file;
+  const RunResult again = runTestbed({"sweep", "--spec", tinySpecFile().string(), "--no-plot", "--out", out.string()});
+  ASSERT_EQ(again.exitCode, 0) << again.describe();
+  EXPECT_NE(again.err.find("sweep: resuming: 5 cells"), std::string::npos) << again.err;
+  EXPECT_TRUE(fs::exists(out / "tiny.md"));
+  EXPECT_FALSE(fs::exists(out / "tiny.png"));
+}
+
 TEST(CliMerge, ShardsJoinIntoTheWholeRunsCellsAndMismatchesAreRefused) {
   TempDir tmp("sweep-merge");
   const std::string spec = tinySpecFile().string();

@@ -242,11 +242,14 @@ TEST_F(ViewerTest, ErrorModeAndMetricsAgreeWithCompare) {
 
 // soft-error mode is compare --reference soft's heat map: the same sm frame against the same
 // area-light reference (64 samples, compare's default with --reference soft), recomputed here
-// from compare's sm.exr and area.exr; one 8-bit step for the PNG's rounding.
+// from compare's sm.exr and area.exr; one 8-bit step for the PNG's rounding. Its metrics
+// (the panel's figures) are compare's soft ones, beside the hard ones.
 TEST_F(ViewerTest, SoftErrorModeIsTheHeatMapAgainstTheAreaReference) {
-  const fs::path heat = dir_ / "soft_heat.png";
+  const fs::path heat = dir_ / "soft_heat.png", metrics = dir_ / "soft_metrics.json";
   const RunResult run = view(with({"--scene", scene("wall.json").string(), "--technique", "sm", "--script",
-                                   writeScript("mode soft-error\nscreenshot " + heat.string() + "\nquit\n").string()},
+                                   writeScript("mode soft-error\nscreenshot " + heat.string() + "\nmetrics " +
+                                               metrics.string() + "\nquit\n")
+                                       .string()},
                                   kCommon));
   ASSERT_EQ(run.exitCode, 0) << run.err;
   const fs::path out = dir_ / "compare_soft";
@@ -263,6 +266,11 @@ TEST_F(ViewerTest, SoftErrorModeIsTheHeatMapAgainstTheAreaReference) {
   const testbed::ImageF hard = testbed::errorHeatMap(testbed::readImage(out / "sm.exr"),
                                                      testbed::readImage(out / "groundtruth.exr"));
   EXPECT_GT(maxStepDifference(shown, hard), 10);
+  const json fromView = json::parse(readFile(metrics)), fromCompare = json::parse(readFile(out / "sm.json"));
+  for (const char* name : {"soft_rmse", "soft_penumbra_mae", "soft_outside_mae", "soft_umbra_leak"}) {
+    ASSERT_TRUE(fromView["error"][name].is_number()) << name << ": " << fromView["error"].dump();
+    EXPECT_EQ(fromView["error"][name], fromCompare["error"][name]) << name;
+  }
 }
 
 // The window: the panel at the left, the 3D view beside it showing the screenshot's bytes.
@@ -422,6 +430,7 @@ TEST(ViewerBadInput, ExitsTwoWithOneLineBeforeAnyWindow) {
   writeFile(dir / "set.txt", "technique pcf\nset kernel=4\n");
   writeFile(dir / "play.txt", "play\n");
   writeFile(dir / "seek.txt", "seek 48\n");
+  writeFile(dir / "far.txt", "orbit 10 0\nzoom 1e30\nscreenshot " + (dir / "x.png").string() + "\n");
   const std::string wall = scene("wall.json").string();
   struct Case {
     std::vector<std::string> args;
@@ -441,6 +450,7 @@ TEST(ViewerBadInput, ExitsTwoWithOneLineBeforeAnyWindow) {
       {{"--scene", wall, "--size", "12x"}, "--size"},
       {{"--scene", wall, "--script", (dir / "play.txt").string()}, (dir / "play.txt").string() + ":1: the scene has no animation"},
       {{"--scene", spinning().string(), "--script", (dir / "seek.txt").string()}, (dir / "seek.txt").string() + ":1: seek:"},
+      {{"--scene", wall, "--script", (dir / "far.txt").string()}, (dir / "far.txt").string() + ":2: zoom: camera.eye:"},
   };
   for (const auto& c : cases) {
     const RunResult run = testbed(with({"view"}, c.args));

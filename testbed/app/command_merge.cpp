@@ -177,7 +177,6 @@ CommandRunner addMergeCommand(CLI::App& app) {
                      {{"command", commandLine}, {"machine", machines}, {"backend", backends}, {"build", field(first, "build")}},
                      figureImages, !options->noPlot);
     files.commit();
-    if (!options->noPlot) plotSweepTables(options->out, spec.name);
     std::cerr << "testbed: merged " << shards.size() << " shards, " << records.size() << " records, into " << options->out << "\n";
     return 0;
   }};

@@ -323,7 +323,6 @@ CommandRunner addSweepCommand(CLI::App& app) {
     }
     files.commit();
     removeFinishedCells(out);  // records.json holds them now
-    if (whole && !options->noPlot) plotSweepTables(options->common.out, spec.name);
     std::cerr << "testbed: " << records.size() << " records of " << plan.cells.size() << " cells (shard " << shard.text()
               << ") in " << options->common.out << "\n";
     return 0;

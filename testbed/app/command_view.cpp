@@ -60,7 +60,8 @@ CommandRunner addViewCommand(CLI::App& app) {
     view.scene = loadScene(options->scene);
     if (!options->script.empty())
       view.script = viewer::readScript(options->script, view.technique->info->id,
-                                       view.scene.animation ? view.scene.animation->frames : 0);
+                                       view.scene.animation ? view.scene.animation->frames : 0,
+                                       viewer::ScriptCamera{view.scene.camera, float(settings.size.y)});
     view.settings = settings;
 
     auto context = createGlfwContext({64, 64}, "testbed view: " + view.scene.name);

@@ -6,6 +6,7 @@
 
 #include "testbed/app/commands.h"
 #include "testbed/app/python_script.h"
+#include "testbed/app/work_folder.h"
 #include "testbed/core/error.h"
 #include "testbed/io/json_input.h"
 #include "testbed/report/report_html.h"
@@ -27,6 +28,17 @@ std::string slug(const std::string& text) {
   }
   while (!out.empty() && out.back() == '-') out.pop_back();
   return out.substr(0, 48);
+}
+
+// scripts/sweep_plot.py draws the table in a private folder; its plot is staged beside the
+// table, so a failing plot leaves nothing committed rather than tables without their plots.
+void stagePlot(OutputFiles& files, const std::string& name, const std::string& tableJson) {
+  const WorkFolder work("testbed-plot");
+  const fs::path table = work.path() / (name + ".json");
+  std::ofstream(table, std::ios::binary) << tableJson;
+  runPythonScript("sweep_plot.py", {table.string()}, (files.directory() / (name + ".json")).string());
+  for (const char* extension : {".png", ".svg"})
+    files.writeText(name + extension, WorkFolder::read(work.path() / (name + extension)));
 }
 
 }  // namespace
@@ -130,6 +142,7 @@ void stageSweepReport(OutputFiles& files, const SweepSpec& spec, const SweepPlan
     files.writeText(name + ".md", sweepTableMarkdown(table, withBackend));
     pageTables.emplace_back(name, sweepTableJson(table, withBackend));
     files.writeText(name + ".json", pageTables.back().second.dump(2) + "\n");
+    if (plots) stagePlot(files, name, pageTables.back().second.dump(2) + "\n");
   }
   // One close-up figure per frame set-up of the figure column (a scene, in the papers).
   std::map<std::size_t, std::vector<std::size_t>> byTruth;
@@ -156,14 +169,5 @@ void stageSweepReport(OutputFiles& files, const SweepSpec& spec, const SweepPlan
   files.writeText("index.html", sweepHtml(spec.name, pageTables, plan.entries, records, {names.begin(), names.end()}, plots));
 }
 
-void plotSweepTables(const fs::path& dir, const std::string& name) {
-  for (const auto& entry : fs::directory_iterator(dir)) {
-    const std::string file = entry.path().filename().string();
-    if (entry.path().extension() != ".json" || file.rfind(name, 0) != 0 ||
-        (file != name + ".json" && file.rfind(name + ".", 0) != 0))
-      continue;
-    runPythonScript("sweep_plot.py", {entry.path().string()}, entry.path().string());
-  }
-}
 
 }  // namespace testbed

@@ -32,15 +32,12 @@ SweepOverrides overridesFromJson(const nlohmann::json& overrides, const std::str
 using FigureImages = CellImages;  // a figure cell's visibility and shaded frame
 
 // Stages every backend's table (records of different backends never share a table) and
-// the close-up figure of the figure column's cells into `files`. `plots`: whether the
-// tables' plots will be drawn beside them (index.html names only files that will exist).
+// the close-up figure of the figure column's cells into `files`. `plots`: the tables'
+// plots too, drawn by scripts/sweep_plot.py; throws std::runtime_error when it fails, so
+// the set is committed with all its plots or not at all.
 void stageSweepReport(OutputFiles& files, const SweepSpec& spec, const SweepPlan& plan,
                       const std::vector<Record>& records, const SweepHeader& header,
                       const std::map<std::size_t, FigureImages>& figureImages, bool plots);
-
-// Runs scripts/sweep_plot.py on each committed <name>*.json table in `dir`. Throws
-// std::runtime_error when the script fails.
-void plotSweepTables(const std::filesystem::path& dir, const std::string& name);
 
 // The cells whose images the close-up figure shows: the figure column's, with their
 // ground truth. Saved by the shard that runs them as figure-cell-<k>.exr / .png.

@@ -216,7 +216,6 @@ class Program : public GlObject {
   std::string name_;                   // the fragment or compute shader's key
   std::vector<std::string> declared_;  // uniform names of its sources, sorted
   mutable std::vector<GLint> setLocations_;  // every location set() wrote, sorted
-  mutable bool checkedSet_ = false;
 };
 
 enum class UnsetUniformPolicy { Warn, Error };

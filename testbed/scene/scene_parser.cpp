@@ -20,6 +20,7 @@
 #include "testbed/core/error.h"
 #include "testbed/io/json_input.h"
 #include "testbed/scene/animation.h"
+#include "testbed/scene/camera_check.h"
 #include "testbed/scene/primitives.h"
 #include "testbed/scene/scene.h"
 #include "testbed/scene/view.h"
@@ -222,6 +223,8 @@ class Parser {
     return camera;
   }
 
+ public:
+  // Public for the free checkCamera(): the viewer checks its scripted moves with it.
   void checkCamera(const CameraDesc& camera, const json& given, const Key& key) const {
     const glm::vec3 view = camera.target - camera.eye;
     if (camera.eye == camera.target) fail(key / "target", "must differ from camera.eye");
@@ -233,6 +236,7 @@ class Parser {
     }
   }
 
+ private:
   // Values that pass as numbers but whose derived quantities degenerate in the renderer's
   // float arithmetic, giving an all-background image or a late failure instead of an error.
   void checkCameraPrecision(const CameraDesc& camera, const json& given, const Key& key) const {
@@ -261,12 +265,25 @@ class Parser {
     if (!(std::abs(ndcDepth(n) + 1.0f) < 1e-3f && std::abs(ndcDepth(f) - 1.0f) < 1e-3f))
       fail(key / "far", "near " + show(n) + " and far " + show(f) +
                             " overflow the float projection matrix (use planes nearer to the scene's scale)");
+    // The view transform subtracts the eye from every vertex in float: once float spacing at
+    // the eye's coordinates reaches the near distance, nothing in front of the camera keeps
+    // its place (an eye at 1e30 renders an empty image).
+    const float reach = std::max({std::abs(camera.eye.x), std::abs(camera.eye.y), std::abs(camera.eye.z)});
+    const float spacing = std::nextafter(reach, std::numeric_limits<float>::infinity()) - reach;
+    if (!(spacing < n))
+      fail(key / "eye", "coordinates as large as " + show(reach) + " are " + show(spacing) +
+                            " apart in float, not finer than near (" + show(n) +
+                            "): nothing in front of the camera keeps its place (bring the scene nearer the origin)");
     // A view direction from two points that differ only in their last bits is noise.
     const glm::vec3 view = camera.target - camera.eye;
     const float scale = std::max(glm::length(camera.eye), glm::length(camera.target));
     if (!(glm::length(view) > 1e-5f * scale) || !std::isnormal(glm::dot(view, view)))
       fail(key / "target", "is only " + show(glm::length(glm::dvec3(camera.target) - glm::dvec3(camera.eye))) +
                                " from camera.eye: too close to give a view direction in float precision");
+    // Beyond far, the point the camera is aimed at is clipped away with everything around it.
+    if (glm::length(view) > f)
+      fail(key / "target", "is " + show(glm::length(view)) + " from camera.eye, beyond far (" + show(f) +
+                               "): what the camera is aimed at would be clipped away");
   }
 
   LightDesc light(const json& value, const Key& key) const {
@@ -681,6 +698,10 @@ fs::path assetDirectory() {
 
 Scene parseScene(const json& document, const fs::path& file) {
   return Parser(file).scene(document);
+}
+
+void checkCamera(const CameraDesc& camera, const fs::path& where) {
+  Parser(where).checkCamera(camera, json::object(), Key() / "camera");
 }
 
 Scene loadScene(const fs::path& file) {

@@ -47,17 +47,6 @@ class SpecReader {
     return value.get<std::string>();
   }
 
-  // Text that lands in a cell of the markdown table: a '|' would split the cell and a line
-  // break end the table, so both are refused here rather than the table coming out torn.
-  std::string tableText(const json& value, const std::string& key) const {
-    const std::string t = text(value, key);
-    for (unsigned char c : t)
-      if (c == '|' || c < 0x20 || c == 0x7f)
-        fail(key, std::string(c == '|' ? "'|'" : "a control character (a line break?)") +
-                      " would break the markdown table, got " + show(value));
-    return t;
-  }
-
   int integer(const json& value, const std::string& key, int lo, int hi) const {
     if (!value.is_number_integer() && !value.is_number_unsigned())
       fail(key, "expected an integer, got " + show(value));
@@ -479,7 +468,7 @@ SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneF
     const std::string key = "columns[" + std::to_string(i) + "]";
     r.keys(columns[i], key, with(kSettingKeys, {"label", "comment"}));
     if (!columns[i].contains("label")) r.fail(key + ".label", "missing (required)");
-    spec.columns.push_back({r.tableText(columns[i]["label"], key + ".label"), r.settings(columns[i], key, spec)});
+    spec.columns.push_back({r.text(columns[i]["label"], key + ".label"), r.settings(columns[i], key, spec)});
   }
 
   // "techniques": ["sm", "pcf"] is rows [{"techniques": ["sm"]}, {"techniques": ["pcf"]}].
@@ -503,7 +492,7 @@ SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneF
                                          "not_measured_columns", "paper", "comment"}));
     if (!row.contains("techniques")) r.fail(key + ".techniques", "missing (required)");
     SweepRow parsed;
-    if (row.contains("group")) parsed.group = r.tableText(row["group"], key + ".group");
+    if (row.contains("group")) parsed.group = r.text(row["group"], key + ".group");
     if (row.contains("comment")) r.text(row["comment"], key + ".comment");
     const json& techniques = row["techniques"];
     if (!techniques.is_array() || techniques.empty()) r.fail(key + ".techniques", "expected a non-empty array of ids");
@@ -517,7 +506,7 @@ SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneF
       r.technique(parsed.techniques.back(), where);
     }
     // Without a label a row is called after its techniques.
-    if (row.contains("label")) parsed.label = r.tableText(row["label"], key + ".label");
+    if (row.contains("label")) parsed.label = r.text(row["label"], key + ".label");
     else
       for (const auto& t : parsed.techniques) parsed.label += (parsed.label.empty() ? "" : " + ") + t;
     parsed.set = r.settings(row, key, spec);
@@ -533,7 +522,7 @@ SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneF
           r.fail(where, "\"" + parsed.passes->back() + "\" is already in the list");
       }
     }
-    if (row.contains("not_measured")) parsed.notMeasured = r.tableText(row["not_measured"], key + ".not_measured");
+    if (row.contains("not_measured")) parsed.notMeasured = r.text(row["not_measured"], key + ".not_measured");
     if (row.contains("not_measured_columns")) {
       const json& columns = row["not_measured_columns"];
       if (parsed.notMeasured.empty()) r.fail(key + ".not_measured_columns", "needs \"not_measured\" (the reason)");

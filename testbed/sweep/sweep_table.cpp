@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "testbed/core/error.h"
+#include "testbed/report/markdown_text.h"
 
 namespace testbed {
 namespace {
@@ -175,14 +176,14 @@ std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& heade
   md << "|" << (groups ? " |" : "") << " technique |";
   std::size_t n = 0;
   for (std::size_t c = 0; c < table.columns.size(); ++c) {
-    md << " " << table.columns[c] << (anyPaper ? " ours" : "") << " |";
-    if (paperShown(c)) md << " " << table.columns[c] << " paper |";
+    md << " " << markdownText(table.columns[c]) << (anyPaper ? " ours" : "") << " |";
+    if (paperShown(c)) md << " " << markdownText(table.columns[c]) << " paper |";
     n += paperShown(c) ? 2 : 1;
   }
   if (table.hasRatios)
     for (std::size_t c = 0; c < table.columns.size(); ++c) {
-      md << " " << table.columns[c] << (anyPaper ? " ours" : "") << " ×SM |";
-      if (paperShown(c)) md << " " << table.columns[c] << " paper ×SM |";
+      md << " " << markdownText(table.columns[c]) << (anyPaper ? " ours" : "") << " ×SM |";
+      if (paperShown(c)) md << " " << markdownText(table.columns[c]) << " paper ×SM |";
       n += paperShown(c) ? 2 : 1;
     }
   if (table.hasDifferences)
@@ -198,9 +199,9 @@ std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& heade
   for (std::size_t r = 0; r < table.rows.size(); ++r) {
     const auto& row = table.rows[r];
     md << "|";
-    if (groups) md << " " << (r == 0 || row.group != lastGroup ? row.group : "") << " |";
+    if (groups) md << " " << (r == 0 || row.group != lastGroup ? markdownText(row.group) : "") << " |";
     lastGroup = row.group;
-    md << " " << row.label << (row.notMeasured.empty() ? "" : " †") << " |";
+    md << " " << markdownText(row.label) << (row.notMeasured.empty() ? "" : " †") << " |";
     for (std::size_t c = 0; c < table.columns.size(); ++c) {
       md << " " << number(row.ours[c], table.digits) << " |";
       if (paperShown(c)) md << " " << number(row.paper[c], table.digits) << " |";
@@ -220,7 +221,8 @@ std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& heade
   std::set<std::string> footnotes;  // each row label and reason once, however many groups repeat it
   for (const auto& row : table.rows)
     if (!row.notMeasured.empty() && footnotes.insert(row.label + ": " + row.notMeasured).second)
-      md << (footnotes.size() == 1 ? "\n" : "") << "† " << row.label << ": " << row.notMeasured << "\n";
+      md << (footnotes.size() == 1 ? "\n" : "") << "† " << markdownText(row.label) << ": " << markdownText(row.notMeasured)
+         << "\n";
   return md.str();
 }
 

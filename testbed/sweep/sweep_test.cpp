@@ -243,6 +243,37 @@ TEST(SweepTable, MarkdownHasThePapersRowsAndColumns) {
   EXPECT_NE(md.find("- backend: z"), std::string::npos);
 }
 
+// Labels are the user's words: a '|', a line break or a backtick in one is escaped in the
+// markdown table, not refused, and every table line keeps the header's number of cells.
+TEST(SweepTable, MarkdownEscapesLabelsThatHoldTableCharacters) {
+  json document = tinySpec();
+  document["columns"][0]["label"] = "a | b";
+  document["rows"][0]["label"] = "SM\nline two";
+  document["rows"][1]["label"] = "`code` \\|";
+  document["rows"][2]["group"] = "x|y";
+  const SweepSpec spec = parseSweepSpec(document, kSpecFile);
+  const std::string md = sweepTableMarkdown(buildSweepTable(spec, planSweep(spec, {}), {}), {});
+  // Cell separators: '|' not escaped by a backslash (itself unescaped).
+  auto separators = [](const std::string& line) {
+    int n = 0;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      if (line[i] == '\\') ++i;
+      else if (line[i] == '|') ++n;
+    }
+    return n;
+  };
+  std::istringstream lines(md);
+  std::vector<std::string> table;
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind("|", 0) == 0) table.push_back(line);
+  ASSERT_EQ(table.size(), 2u + 4u) << md;  // header, separator, one line per row
+  for (const auto& line : table) EXPECT_EQ(separators(line), separators(table[0])) << line;
+  EXPECT_NE(table[0].find(" a \\| b ours |"), std::string::npos) << table[0];
+  EXPECT_NE(table[2].find(" SM<br>line two |"), std::string::npos) << table[2];
+  EXPECT_NE(table[3].find(" \\`code\\` \\\\\\| |"), std::string::npos) << table[3];
+  EXPECT_NE(table[4].find("| x\\|y |"), std::string::npos) << table[4];
+}
+
 // The bundled paper specs (paper/): one per table, shaped as in the paper.
 TEST(SweepPaperSpecs, EachTableHasThePapersShape) {
   struct Shape {

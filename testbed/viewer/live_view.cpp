@@ -213,7 +213,11 @@ void LiveView::rebuildImage() {
   image_ = runner_->shade(visibility_);  // what the mode could not show
 }
 
-ErrorMetrics LiveView::errorMetrics() { return computeErrorMetrics(visibility_, groundTruth()); }
+ErrorMetrics LiveView::errorMetrics() {
+  // Soft-error mode adds the soft metrics against the reference its heat map shows.
+  const bool soft = mode_ == DisplayMode::SoftError && scene_.light.radius > 0;
+  return computeErrorMetrics(visibility_, groundTruth(), soft ? &areaReference() : nullptr);
+}
 
 std::uint64_t LiveView::memoryBytes() const { return session_->memoryBytes(); }
 

@@ -79,8 +79,9 @@ class LiveView {
   const ImageF& visibility() const { return visibility_; }
   const std::vector<std::pair<std::string, ImageF>>& debugImages() const { return debugImages_; }
 
-  // Error metrics of the last frame against the ground truth (rendered if stale). Throws
-  // std::invalid_argument when the frame has no receiver or NaN on one.
+  // Error metrics of the last frame against the ground truth (rendered if stale); in
+  // soft-error mode, with a light radius, also the soft ones against the area-light
+  // reference. Throws std::invalid_argument when the frame has no receiver or NaN on one.
   ErrorMetrics errorMetrics();
   // The record `render` would write for this frame, with its error block; an animated
   // scene's also with "frame" and "temporal" (the running figures, as sequence records

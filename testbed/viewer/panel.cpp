@@ -262,6 +262,12 @@ void Panel::metricsSection(LiveView& view) {
   if (metricsGeneration_ != view.viewGeneration() || metricsFrame_ != view.framesRendered())
     ImGui::TextDisabled("(of frame %llu; press compute for this one)", static_cast<unsigned long long>(metricsFrame_));
   const ErrorMetrics& m = *metrics_;
+  if (m.softRmse) {  // soft-error mode: what its heat map shows first
+    ImGui::TextDisabled("against the area-light reference");
+    ImGui::Text("soft rmse %.4f   umbra leak %.4f", *m.softRmse, m.softUmbraLeak.value_or(0));
+    ImGui::Text("mae: penumbra %.4f   outside %.4f", m.softPenumbraMae.value_or(0), m.softOutsideMae.value_or(0));
+    ImGui::TextDisabled("against the hard shadow volumes");
+  }
   ImGui::Text("mismatch %.3f %%   edge mismatch %.3f %%", m.mismatchPct, m.edgeMismatchPct);
   ImGui::Text("rmse %.4f   leak %.3f %%   overestimation %.3f %%", m.rmse, m.leakPct, m.overestimationPct);
   ImGui::Text("boundary distance: mean %.3f px, p95 %.3f px", m.boundaryMean, m.boundaryP95);

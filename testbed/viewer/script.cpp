@@ -8,8 +8,10 @@
 #include "testbed/harness/frame_runner.h"
 #include "testbed/core/error.h"
 #include "testbed/io/input_file.h"
+#include "testbed/scene/camera_check.h"
 #include "testbed/technique/registry.h"
 #include "testbed/viewer/live_view.h"
+#include "testbed/viewer/navigation.h"
 
 namespace testbed::viewer {
 namespace {
@@ -62,8 +64,8 @@ int integer(const std::string& word, int lo, int hi, const std::string& what) {
 // checked exactly as `--set` would be for the technique current at that line.
 class Checker {
  public:
-  Checker(std::string technique, int animationFrames)
-      : technique_(std::move(technique)), animationFrames_(animationFrames) {}
+  Checker(std::string technique, int animationFrames, std::optional<ScriptCamera> camera)
+      : technique_(std::move(technique)), animationFrames_(animationFrames), camera_(std::move(camera)) {}
 
   void check(ScriptAction& a, const std::vector<std::string>& args) {
     const std::string& what = args.empty() ? std::string() : args[0];
@@ -89,10 +91,12 @@ class Checker {
       case ActionKind::Pan:
       case ActionKind::Light:
         for (int i = 0; i < 2; ++i) a.numbers[i] = number(args[std::size_t(i)], "expected two numbers");
+        moveCamera(a);
         break;
       case ActionKind::Zoom:
         a.numbers[0] = number(what, "zoom");
         if (!(a.numbers[0] > 0)) throw InputError("zoom: the factor must be > 0, got '" + what + "'");
+        moveCamera(a);
         break;
       case ActionKind::Mode:
         parseDisplayMode(what);
@@ -123,8 +127,23 @@ class Checker {
   }
 
  private:
+  // The viewer's own move (navigation.h), then the scene file's camera checks on the result.
+  void moveCamera(const ScriptAction& a) {
+    if (!camera_) return;
+    CameraDesc& c = camera_->camera;
+    const char* verb = a.kind == ActionKind::Orbit ? "orbit" : a.kind == ActionKind::Pan ? "pan" : "zoom";
+    switch (a.kind) {
+      case ActionKind::Orbit: orbit(c, a.numbers[0], a.numbers[1]); break;
+      case ActionKind::Pan: pan(c, {a.numbers[0], a.numbers[1]}, camera_->viewHeight); break;
+      case ActionKind::Zoom: zoom(c, a.numbers[0]); break;
+      default: return;
+    }
+    checkCamera(c, verb);
+  }
+
   std::string technique_;
   int animationFrames_ = 0;
+  std::optional<ScriptCamera> camera_;
   std::map<std::string, std::string> assignments_;
 };
 
@@ -137,9 +156,9 @@ void checkImagePath(const std::filesystem::path& path, bool floatAllowed, const 
 }
 
 std::vector<ScriptAction> parseScript(const std::string& text, const std::string& name, std::string technique,
-                                      int animationFrames) {
+                                      int animationFrames, const std::optional<ScriptCamera>& camera) {
   std::vector<ScriptAction> actions;
-  Checker checker(std::move(technique), animationFrames);
+  Checker checker(std::move(technique), animationFrames, camera);
   std::istringstream lines(text);
   int number = 0;
   for (std::string line; std::getline(lines, line);) {
@@ -175,9 +194,9 @@ std::vector<ScriptAction> parseScript(const std::string& text, const std::string
 }
 
 std::vector<ScriptAction> readScript(const std::filesystem::path& file, const std::string& technique,
-                                     int animationFrames) {
+                                     int animationFrames, const std::optional<ScriptCamera>& camera) {
   try {
-    return parseScript(readInputFile(file, kMaxScriptBytes), file.string(), technique, animationFrames);
+    return parseScript(readInputFile(file, kMaxScriptBytes), file.string(), technique, animationFrames, camera);
   } catch (const InputError& error) {
     throw InputError(std::string("--script ") + error.what());
   }

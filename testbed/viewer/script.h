@@ -4,8 +4,11 @@
 // line throws InputError("FILE:LINE: ...").
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "testbed/scene/scene.h"
 
 namespace testbed::viewer {
 
@@ -40,6 +43,14 @@ struct ScriptAction {
   int count = 0;               // shadow-map, frames, step, seek
 };
 
+// Where the viewer's camera starts and how tall its view is (pan moves by pixels), so each
+// orbit, pan and zoom is replayed here and the camera after it checked as a scene file's
+// would be (scene.h checkCamera): a move to 1e30 or onto the target is refused up front.
+struct ScriptCamera {
+  CameraDesc camera;
+  float viewHeight = 0;
+};
+
 // `technique` is the viewer's technique when the script starts: `set` lines are checked
 // against whichever technique is current at that line, plugins included. `animationFrames`
 // is the scene's number of animation frames (0: no animation, where play, pause, step and
@@ -48,11 +59,11 @@ struct ScriptAction {
 // /dev/zero is refused at once, not read without end).
 inline constexpr std::uint64_t kMaxScriptBytes = 1ull << 20;
 std::vector<ScriptAction> readScript(const std::filesystem::path& file, const std::string& technique,
-                                     int animationFrames = 0);
+                                     int animationFrames = 0, const std::optional<ScriptCamera>& camera = {});
 
 // The same from text (for tests); `name` is used in messages.
 std::vector<ScriptAction> parseScript(const std::string& text, const std::string& name, std::string technique,
-                                      int animationFrames = 0);
+                                      int animationFrames = 0, const std::optional<ScriptCamera>& camera = {});
 
 // Image outputs (--screenshot, screenshot lines) must end in .png or .exr, the window's in
 // .png; throws InputError("<what>: ...") otherwise.

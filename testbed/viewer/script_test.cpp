@@ -103,6 +103,35 @@ TEST(ViewerScript, PlaybackActionsAreRefusedOutsideTheAnimation) {
             "s.txt:2: the scene has no animation block, so there is nothing to play, step or seek");
 }
 
+// Moves are replayed on the scene's camera and the result checked as a scene file's camera:
+// finite but huge moves, which rendered an empty image, are refused naming line and field.
+TEST(ViewerScript, CameraMovesThatLeaveARenderableViewAreRefused) {
+  CameraDesc start;
+  start.eye = {0, 30, -45};
+  start.target = {0, 0, 5};
+  start.farPlane = 500;
+  const ScriptCamera camera{start, 360};
+  auto errorFrom = [&](const std::string& text) {
+    try {
+      parseScript(text, "m.txt", "sm", 0, camera);
+    } catch (const InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_EQ(errorFrom("orbit 720 -30\npan 300 -200\nzoom 5\nzoom 0.001\n"), "(accepted)");
+  EXPECT_EQ(errorFrom("orbit 10 0\nzoom 1e30\n").rfind("m.txt:2: zoom: camera.eye: ", 0), 0u) << errorFrom("orbit 10 0\nzoom 1e30\n");
+  // Zoom to 20× the distance of 58: the target lies beyond far (500), the image would be empty.
+  EXPECT_EQ(errorFrom("zoom 20\n").rfind("m.txt:1: zoom: camera.target: ", 0), 0u) << errorFrom("zoom 20\n");
+  // A pan of 1e30 pixels moves eye and target together out to where they round to one point.
+  EXPECT_EQ(errorFrom("pan 1e30 0\n").rfind("m.txt:1: pan: camera.", 0), 0u) << errorFrom("pan 1e30 0\n");
+  // Each move starts where the last left it: 2× zooms take 58 to 466 (within far 500) and
+  // then to 933, refused at the fourth.
+  EXPECT_EQ(errorFrom("zoom 2\nzoom 2\nzoom 2\nzoom 2\n").rfind("m.txt:4: zoom: camera.target: ", 0), 0u);
+  // Without the camera (the fuzzers, older callers), moves are checked for their numbers only.
+  EXPECT_EQ(errorOf("zoom 1e30\n"), "(accepted)");
+}
+
 TEST(ViewerScript, MissingFileIsAnInputError) {
   EXPECT_THROW(readScript("/nonexistent/script.txt", "sm"), InputError);
 }
