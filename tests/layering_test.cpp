@@ -35,20 +35,22 @@ const std::vector<std::vector<std::string>> kLayers = {
     {"testbed/app"},  // the command line
 };
 
-// The folder a repository-relative path belongs to: "testbed/<x>", or "techniques" (every
-// technique folder is one layer: a technique may build on a sibling's shared code, as
-// edtsm-star builds on revectorization), or "groundtruth".
+// The folder a repository-relative path belongs to: "testbed/<x>", "techniques/<x>" or
+// "groundtruth". Technique folders are peers of one another: what two of them share (the
+// revectorization library EDTSM builds on, the software rasterizer's devices) lives in
+// testbed/render, so a plugin sees the same building blocks as the bundled techniques.
 std::string folderOf(const std::string& path) {
   const auto slash = path.find('/');
   if (slash == std::string::npos) return {};
   const std::string top = path.substr(0, slash);
-  if (top == "techniques" || top == "groundtruth") return top;
-  if (top != "testbed") return {};
+  if (top == "groundtruth") return top;
+  if (top != "testbed" && top != "techniques") return {};
   const auto second = path.find('/', slash + 1);
   return second == std::string::npos ? std::string{} : path.substr(0, second);
 }
 
 int layerOf(const std::string& folder) {
+  if (folder.starts_with("techniques/")) return layerOf("techniques");
   for (std::size_t i = 0; i < kLayers.size(); ++i)
     for (const auto& f : kLayers[i])
       if (f == folder) return static_cast<int>(i);
@@ -122,12 +124,14 @@ TEST(Layering, AnUpwardIncludeIsReported) {
   testbed::test::writeFile(root / "testbed/harness/b.cpp", "#include \"testbed/render/gpu_scene.h\"\n");
   testbed::test::writeFile(root / "techniques/x/c.cpp", "#include \"groundtruth/volume_geometry.h\"\n");
   testbed::test::writeFile(root / "techniques/x/c_test.cpp", "#include \"testbed/harness/frame_runner.h\"\n");
+  testbed::test::writeFile(root / "techniques/y/d.glsl", "#include \"techniques/x/e.glsl\"\n");
   const auto violations = layeringViolations(root.path());
-  ASSERT_EQ(violations.size(), 2u);
+  ASSERT_EQ(violations.size(), 3u);
   std::map<std::string, std::string> byFile;
   for (const auto& v : violations) byFile[v.where] = v.what;
   EXPECT_EQ(byFile["testbed/render/a.h:1"], "testbed/render includes testbed/harness/frame_runner.h (a higher layer)");
-  EXPECT_EQ(byFile["techniques/x/c.cpp:1"], "techniques includes groundtruth/volume_geometry.h (a peer)");
+  EXPECT_EQ(byFile["techniques/x/c.cpp:1"], "techniques/x includes groundtruth/volume_geometry.h (a peer)");
+  EXPECT_EQ(byFile["techniques/y/d.glsl:1"], "techniques/y includes techniques/x/e.glsl (a peer)");
 }
 
 }  // namespace

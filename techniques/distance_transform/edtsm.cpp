@@ -71,7 +71,7 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
     const float noReceiver[4] = {0, -1, 0, 0};  // value 0, depth −1: later passes skip it
     glClearNamedFramebufferfv(hard_.framebuffer().id(), GL_COLOR, 0, noReceiver);
     // The shadow map as RBSM's walks read it on the fast path
-    // (techniques/revectorization/depth_image.h).
+    // (testbed/render/depth_image.h).
     rbsm_.updateDepthImage(shadowMap_.depth());
   }
   const auto bindRbsm = [&](const Program& program) {

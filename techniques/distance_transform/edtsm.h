@@ -24,7 +24,8 @@
 #include "techniques/distance_transform/edtsm_penumbra_band.h"
 #include "techniques/distance_transform/feature_transform.h"
 #include "techniques/distance_transform/feature_transform_banded.h"
-#include "techniques/revectorization/revectorization_technique.h"
+#include "testbed/render/edge_split_pass.h"
+#include "testbed/render/revectorization/revectorization_library.h"
 #include "testbed/gl/render_target.h"
 #include "testbed/render/screen_pass.h"
 #include "testbed/render/shadow_map_pass.h"
@@ -69,7 +70,7 @@ class EdtShadowMapping : public WithParameters<EdtsmParameters> {
   BandedFeatureTransformPass bandedTransform_;  // the paper path's
   FilterTiles filterTiles_;
   PenumbraBand band_;
-  revectorization::EdgeSplitPass rbsmPass_{"techniques/distance_transform/edtsm_rbsm.frag"};
+  EdgeSplitPass rbsmPass_{"techniques/distance_transform/edtsm_rbsm.frag"};
   Program seedsProgram_, penumbraProgram_, filterProgram_;  // the reference pipeline
   Program seedRows_, penumbraColumns_, filterRows_, filterColumns_;
   RenderTarget hard_, seeds_, intensity_, filtered_;

@@ -4,7 +4,7 @@
 // Drawn as the revectorization family's screen pass is (testbed/glsl/screen_pass.glsl):
 // a classifying draw, then the edge pixels only.
 #include "techniques/distance_transform/edtsm_screen.glsl"
-#include "techniques/revectorization/smsr.glsl"
+#include "testbed/render/revectorization/smsr.glsl"
 
 layout(location = 0) out vec2 outHard;
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "techniques/revectorization/depth_image.h"
+#include "testbed/render/depth_image.h"
 #include "techniques/revectorization/rpcf_tiles.h"
 #include "testbed/gl/objects.h"
 #include "testbed/gl/pass_timer.h"
@@ -48,7 +48,7 @@ using Shape = std::function<bool(double, double)>;
 class Probe {
  public:
   // `layout`: where rvStoredDepth reads (depth_image.h).
-  explicit Probe(int size = kSize, revectorization::DepthImage::Layout layout = revectorization::DepthImage::Layout::Blocks)
+  explicit Probe(int size = kSize, DepthImage::Layout layout = DepthImage::Layout::Blocks)
       : size_(size) {
     test::sharedContext();
     tiles_.emplace();
@@ -109,7 +109,7 @@ class Probe {
   Program program_;
   Texture map_;
   std::optional<revectorization::RpcfTiles> tiles_;  // made once the context is current
-  std::optional<revectorization::DepthImage> depthImage_;
+  std::optional<DepthImage> depthImage_;
 };
 
 Probe& probe() {
@@ -487,7 +487,7 @@ TEST(RevectorizationGlsl, RpcfScreenPassEqualsThePlainLoop) {
 // the very same numbers, on a map of odd size (the blocks' last row and column are
 // half-filled) and beyond its border.
 TEST(RevectorizationGlsl, EveryDepthLayoutGivesTheSameNumbers) {
-  using Layout = revectorization::DepthImage::Layout;
+  using Layout = DepthImage::Layout;
   constexpr int kOddSize = 33;
   static Probe texture(kOddSize, Layout::Texture), blocks(kOddSize, Layout::Blocks), texels(kOddSize, Layout::Texels);
   std::vector<glm::vec2> points;

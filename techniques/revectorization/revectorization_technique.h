@@ -1,14 +1,14 @@
 #pragma once
 // The shared C++ side of the single-pass revectorization techniques (smsr, rsmss,
 // rpcf-smsr, rpcf-rsmss): the shared shadow map, one "revectorize" screen pass running the
-// technique's own fragment shader, the common parameters, and the debug views.
+// technique's own fragment shader (over revectorization_library.h).
 #include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
-#include "techniques/revectorization/depth_image.h"
-#include "techniques/revectorization/edge_split_pass.h"
+#include "testbed/render/edge_split_pass.h"
+#include "testbed/render/revectorization/revectorization_library.h"
 #include "testbed/render/screen_pass.h"
 #include "testbed/render/shadow_map_pass.h"
 #include "testbed/technique/technique.h"
@@ -16,62 +16,8 @@
 
 namespace testbed::revectorization {
 
-enum class DebugView { None, Discontinuity, Onds };
-
-// The family's parameters after a technique's own: max_search, epsilon, bias, debug, then
-// the shadow map's.
-struct CommonParameters {
-  int maxSearch;
-  float epsilon, bias;
-  DebugView debug;
-  ShadowMapPass::Parameters shadowMap;
-  void reflect(ParameterBinder& b);
-};
-// `visibility` of smsr, rpcf-smsr and edtsm: conservative (EDTSM* eq. 4, false) or
-// improved (eq. 7, true). EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for
-// Euclidean distance transform shadow mapping", Computers & Graphics 71 (2018).
-void reflectVisibility(ParameterBinder& b, bool& improved);
 // `kernel` of the RPCF variants.
 void reflectKernel(ParameterBinder& b, int& kernel);
-
-// The common settings and the untimed debug view; used by the single-pass techniques and
-// by smsr-2pass.
-class Common {
- public:
-  void configure(const CommonParameters& parameters) { parameters_ = parameters; }
-  // Uniforms of revectorization.glsl; bindLibrary also binds the shadow map and its depth
-  // image (depth_image.h), which updateDepthImage() must have copied this frame.
-  void setLibraryUniforms(const Program& program) const;
-  void bindLibrary(const Program& program, const Texture& shadowMap) const;
-  // Where the frame's walks read stored depths (depth_image.h): the depth texture on the
-  // paper path, a copy laid out as `fastLayout` on the fast one. Before libraryDefines().
-  void setPath(TechniquePath path, DepthImage::Layout fastLayout = DepthImage::Layout::Blocks) {
-    depthImage_.setLayout(path == TechniquePath::Paper ? DepthImage::Layout::Texture : fastLayout);
-  }
-  // Copies the frame's shadow map into the depth image (nothing on the paper path);
-  // callers time it inside their first pass after the shadow map, as part of the technique.
-  void updateDepthImage(const Texture& shadowMap) { depthImage_.update(shadowMap); }
-  // The defines every program that includes revectorization.glsl must be compiled with.
-  std::string libraryDefines() const { return depthImage_.defines(); }
-  // When a debug view was asked for, draws the light-space one (debug.frag) outside any
-  // timed scope and reads it back. `bothSides` false shows entering discontinuities only.
-  void renderDebug(const FrameInputs& in, const Texture& shadowMap, bool bothSides);
-  // For techniques with views of their own: draw `program` (its inputs already bound)
-  // into the debug target and read it back, or read back an RGBA8 texture of theirs.
-  void renderDebugWith(const Program& program, glm::ivec2 size);
-  void captureDebug(const Texture& rgba8, glm::ivec2 size);
-  DebugView debugView() const { return parameters_.debug; }
-  std::vector<std::pair<std::string, ImageF>> debugImages() const;
-
- private:
-  CommonParameters parameters_{};
-  DepthImage depthImage_;
-  Program debugProgram_;
-  std::string debugDefines_;  // debugProgram_'s
-  RenderTarget debugTarget_;  // RGBA8
-  ScreenPass screen_;
-  ImageF debugImage_;
-};
 
 // The passes of a technique made of the shared shadow map and one screen pass
 // (edge_split_pass.h): on the fast path timed "classify" (every pixel, with the depth

@@ -3,7 +3,7 @@
 // are what smsrVisibility does before any traversal. Samples move by whole texels, so
 // each keeps the receiver's sub-texel position p and depth; kernel 1 is SMSR exactly.
 // GI 2016: Macedo & Apolinário, "Revectorization-Based Shadow Mapping", Graphics Interface 2016.
-#include "techniques/revectorization/smsr.glsl"
+#include "testbed/render/revectorization/smsr.glsl"
 #include "techniques/revectorization/rpcf.glsl"
 
 DEFINE_KERNEL_MEAN(rpcfSmsrVisibility, smsrVisibility)

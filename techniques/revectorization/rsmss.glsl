@@ -15,7 +15,7 @@
 // EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
 // shadow mapping", Computers & Graphics 71 (2018).
 // GI 2016: Macedo & Apolinário, "Revectorization-Based Shadow Mapping", Graphics Interface 2016.
-#include "techniques/revectorization/revectorization.glsl"
+#include "testbed/render/revectorization/revectorization.glsl"
 
 float rsmssSigned(RvAxis a) {
   if (a.kind == RV_NO_END) return 0.0;

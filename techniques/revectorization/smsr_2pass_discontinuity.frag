@@ -6,7 +6,7 @@
 // one every technique's facing rule reads.
 // Bondarev, "Shadow Map Silhouette Revectorization", poster, I3D 2014.
 #include "testbed/glsl/receiver.glsl"
-#include "techniques/revectorization/revectorization.glsl"
+#include "testbed/render/revectorization/revectorization.glsl"
 
 in vec3 vPosition;
 layout(location = 0) out vec4 outDisc;

@@ -10,7 +10,7 @@
 // GI 2016: Macedo & Apolinário, "Revectorization-Based Shadow Mapping", Graphics Interface 2016.
 // Bondarev, "Shadow Map Silhouette Revectorization", poster, I3D 2014.
 #include "techniques/revectorization/smsr_2pass_search.glsl"
-#include "techniques/revectorization/smsr.glsl"
+#include "testbed/render/revectorization/smsr.glsl"
 
 float screenVisibility(ivec2 pixel, Receiver r, vec3 light) {
   RvSample s = twoPassSample(pixel, r);

@@ -8,7 +8,7 @@
 // ONDS debug view so the view shows exactly what the pass clips.
 // Bondarev, "Shadow Map Silhouette Revectorization", poster, I3D 2014.
 #include "testbed/glsl/receiver.glsl"
-#include "techniques/revectorization/revectorization.glsl"
+#include "testbed/render/revectorization/revectorization.glsl"
 
 uniform sampler2D uDiscontinuityMap;
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "testbed/scene/mesh_topology.h"
-#include "techniques/revectorization/edge_split_pass.h"
+#include "testbed/render/edge_split_pass.h"
 #include "techniques/silhouette_map/silhouette_edges.h"
 #include "testbed/gl/render_target.h"
 #include "testbed/render/receiver_inputs.h"
@@ -129,7 +129,7 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
   }
 
   ShadowMapPass shadowMap_;
-  revectorization::EdgeSplitPass visibility_{"techniques/silhouette_map/silhouette_map_visibility.frag"};
+  EdgeSplitPass visibility_{"techniques/silhouette_map/silhouette_map_visibility.frag"};
   Program edgeProgram_;
   VertexArray quadVertexArray_;  // no attributes (vertex pulling), the quad indices
   Buffer quadIndices_;           // drawQuads'

@@ -11,7 +11,7 @@
 //   void screenWrite(Receiver r, float v)   a receiver's visibility v, and
 //   void screenFacingAway(Receiver r)       a receiver facing away from the light.
 //
-// A pass may be drawn in two steps (techniques/revectorization/edge_split_pass.h). With
+// A pass may be drawn in two steps (testbed/render/edge_split_pass.h). With
 // SCREEN_PASS_CLASSIFY defined (first draw) the shader defines instead
 //   bool screenClassify(ivec2 pixel, Receiver r, vec3 light, out float v)
 // true, with v, where that cheap answer is the technique's; depth 0 marks the other

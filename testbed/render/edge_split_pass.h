@@ -15,7 +15,7 @@
 #include "testbed/gl/render_target.h"
 #include "testbed/technique/technique.h"
 
-namespace testbed::revectorization {
+namespace testbed {
 
 class EdgeSplitPass {
  public:
@@ -42,4 +42,4 @@ class EdgeSplitPass {
   VertexArray empty_;
 };
 
-}  // namespace testbed::revectorization
+}  // namespace testbed

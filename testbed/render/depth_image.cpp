@@ -1,6 +1,6 @@
-#include "techniques/revectorization/depth_image.h"
+#include "testbed/render/depth_image.h"
 
-namespace testbed::revectorization {
+namespace testbed {
 
 std::string DepthImage::defines() const {
   switch (layout_) {
@@ -17,7 +17,7 @@ void DepthImage::update(const Texture& shadowMap) {
     return;
   }
   if (!copy_ || copyLayout_ != layout_) {
-    copy_ = Program::graphics("testbed/render/fullscreen.vert", "techniques/revectorization/depth_image.frag", defines());
+    copy_ = Program::graphics("testbed/render/fullscreen.vert", "testbed/render/depth_image.frag", defines());
     copyLayout_ = layout_;
   }
   const bool texels = layout_ == Layout::Texels;
@@ -42,4 +42,4 @@ void DepthImage::bind() const {
                      layout_ == Layout::Texels ? GL_R32F : GL_RGBA32F);
 }
 
-}  // namespace testbed::revectorization
+}  // namespace testbed

@@ -20,7 +20,7 @@
 //   becomes shadow;
 // - improved: a U-shape uses the tent α = 2·min(dist)/L so the notch is closed from both
 //   ends; being symmetric in s, it also opens thin shadowed notches from both ends.
-#include "techniques/revectorization/revectorization.glsl"
+#include "testbed/render/revectorization/revectorization.glsl"
 
 uniform int uImproved;
 

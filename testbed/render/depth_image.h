@@ -19,7 +19,7 @@
 #include "testbed/gl/render_target.h"
 #include "testbed/render/screen_pass.h"
 
-namespace testbed::revectorization {
+namespace testbed {
 
 class DepthImage {
  public:
@@ -48,4 +48,4 @@ class DepthImage {
   ScreenPass screen_;
 };
 
-}  // namespace testbed::revectorization
+}  // namespace testbed

@@ -5,7 +5,7 @@
 // uBothSides 0 shows entering discontinuities only, as single-pass SMSR uses them.
 // GI 2016: Macedo & Apolinário, "Revectorization-Based Shadow Mapping", Graphics Interface 2016.
 #include "testbed/glsl/receiver.glsl"
-#include "techniques/revectorization/revectorization.glsl"
+#include "testbed/render/revectorization/revectorization.glsl"
 
 uniform int uDebugView;
 uniform int uBothSides;

@@ -1,6 +1,6 @@
-#include "techniques/revectorization/edge_split_pass.h"
+#include "testbed/render/edge_split_pass.h"
 
-namespace testbed::revectorization {
+namespace testbed {
 
 void EdgeSplitPass::setDefines(const std::string& defines) {
   if (defines == defines_) return;
@@ -72,4 +72,4 @@ void EdgeSplitPass::draw(const FrameInputs& in, const VisibilityTarget& out, Pas
   glDisable(GL_DEPTH_TEST);
 }
 
-}  // namespace testbed::revectorization
+}  // namespace testbed
