@@ -26,8 +26,30 @@ void EdtShadowMapping::configured() {
   rbsm_.configure(parameters_.rbsm);
 }
 
+std::vector<PassDeclaration> EdtShadowMapping::declaredPasses() {
+  return {ShadowMapPass::declaredPass(),
+          {.name = "rbsm-classify",
+           .paperStep = "clearing RBSM's target; on the fast path also the classifying draw and the depth image's copy"},
+          {.name = "rbsm", .paperStep = "RBSM's hard shadow with the camera depth (EDTSM* §3.1)"},
+          {.name = "seeds", .paperStep = "the EDT's seeds (EDTSM* §3.3; reference pipeline)"},
+          {.name = "edt", .paperStep = "the exact screen-space EDT and eq. 8's penumbra (EDTSM* §3.3)"},
+          {.name = "penumbra", .paperStep = "eq. 8's penumbra (EDTSM* §3.3; reference pipeline)"},
+          {.name = "mean-filter", .paperStep = "the edge-aware separable mean filter, eqs. 9–10 (EDTSM* §3.4)"}};
+}
+
+std::vector<ResourceDeclaration> EdtShadowMapping::declaredResources() {
+  return {ShadowMapPass::declaredMap(),
+          {.name = "edtsm-targets", .formats = {GL_RG32F, GL_R8}, .size = SizeRule::Screen, .role = ResourceRole::Paper},
+          {.name = "edt-scratch", .formats = {GL_RG32I, GL_R32I}, .size = SizeRule::Screen, .role = ResourceRole::Paper},
+          {.name = "penumbra-band", .formats = {GL_R32UI, kBufferFormat}, .size = SizeRule::ScreenTiles, .role = ResourceRole::Device},
+          {.name = "filter-tiles", .formats = {GL_R32UI, kBufferFormat}, .size = SizeRule::ScreenTiles, .role = ResourceRole::Device},
+          DepthImage::declared(DepthImage::Layout::Blocks),
+          EdgeSplitPass::declaredMarks(),
+          revectorization::Common::declaredDebugView()};
+}
+
 void EdtShadowMapping::allocate(glm::ivec2 size, bool straightforward) {
-  GpuMemoryLedger::Label label("edtsm-targets", ResourceRole::Paper);
+  auto label = allocating(declaredResources()[1]);
   hard_.ensure({.size = size, .color = GL_RG32F});
   if (straightforward) seeds_.ensure({.size = size, .color = GL_R8});  // else the EDT tells them
   intensity_.ensure({.size = size, .color = GL_RG32F});
@@ -188,10 +210,12 @@ class EdtsmStar final : public EdtShadowMapping {
 
 TESTBED_REGISTER_TECHNIQUE(Edtsm, .id = "edtsm", .output = OutputKind::Filtered,
                            .citation = "Macedo, Apolinário, Euclidean distance transform shadow mapping, GI 2017",
-                           .summary = "fixed-size penumbra from the exact EDT over conservative RBSM hard shadows");
+                           .summary = "fixed-size penumbra from the exact EDT over conservative RBSM hard shadows",
+                           .passes = Edtsm::declaredPasses(), .resources = Edtsm::declaredResources());
 TESTBED_REGISTER_TECHNIQUE(EdtsmStar, .id = "edtsm-star", .output = OutputKind::Filtered,
                            .citation = "Macedo, Apolinário, Improved anti-aliasing for Euclidean distance transform shadow mapping",
-                           .summary = "EDTSM over RBSM with the improved visibility function (less overestimation)");
+                           .summary = "EDTSM over RBSM with the improved visibility function (less overestimation)",
+                           .passes = EdtsmStar::declaredPasses(), .resources = EdtsmStar::declaredResources());
 
 }  // namespace
 }  // namespace testbed::distance_transform

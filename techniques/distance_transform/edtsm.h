@@ -45,6 +45,10 @@ struct EdtsmParameters {
 
 class EdtShadowMapping : public WithParameters<EdtsmParameters> {
  public:
+  // Both techniques' (declaration.h): `reference` times seeds and penumbra apart.
+  static std::vector<PassDeclaration> declaredPasses();
+  static std::vector<ResourceDeclaration> declaredResources();
+
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override;
   std::vector<std::pair<std::string, ImageF>> debugImages() const override { return rbsm_.debugImages(); }
 

@@ -25,7 +25,9 @@ class ExponentialShadowMap final : public PrefilteredTechnique<EsmParameters> {
 
 TESTBED_REGISTER_TECHNIQUE(ExponentialShadowMap, .id = "esm", .output = OutputKind::Filtered,
                            .citation = "Annen, Mertens, Seidel, Flerackers & Kautz, Exponential shadow maps, GI 2008",
-                           .summary = "exponential shadow maps: exp(c z) in R32F, Gaussian-filtered; exp(-c t) E[exp(c z)]");
+                           .summary = "exponential shadow maps: exp(c z) in R32F, Gaussian-filtered; exp(-c t) E[exp(c z)]",
+                           .passes = prefilteredPasses("exp(c z) of light depth (Annen et al., GI 2008)", "exp(-c t) E[exp(c z)], clamped"),
+                           .resources = prefilteredResources({GL_R32F}));
 
 }  // namespace
 }  // namespace testbed

@@ -38,7 +38,9 @@ class ExponentialVarianceShadowMap final : public PrefilteredTechnique<EvsmParam
 
 TESTBED_REGISTER_TECHNIQUE(ExponentialVarianceShadowMap, .id = "evsm", .output = OutputKind::Filtered,
                            .citation = "Lauritzen & McCool, Layered variance shadow maps, GI 2008",
-                           .summary = "exponential variance shadow maps: Chebyshev on exp-warped depth, 32-bit float");
+                           .summary = "exponential variance shadow maps: Chebyshev on exp-warped depth, 32-bit float",
+                           .passes = prefilteredPasses("the moments of exponentially warped depth (Lauritzen & McCool, GI 2008)", "Chebyshev's bound on each warp"),
+                           .resources = prefilteredResources({GL_RG32F, GL_RGBA32F}));
 
 }  // namespace
 }  // namespace testbed

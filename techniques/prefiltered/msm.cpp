@@ -36,7 +36,9 @@ class MomentShadowMap final : public PrefilteredTechnique<MsmParameters> {
 
 TESTBED_REGISTER_TECHNIQUE(MomentShadowMap, .id = "msm", .output = OutputKind::Filtered,
                            .citation = "Peters & Klein, Moment shadow mapping, I3D 2015",
-                           .summary = "moment shadow maps: 4 moments, Hamburger 4MSM bound, optimized 16-bit quantization");
+                           .summary = "moment shadow maps: 4 moments, Hamburger 4MSM bound, optimized 16-bit quantization",
+                           .passes = prefilteredPasses("four moments of light depth, optionally quantized (Peters & Klein, I3D 2015)", "the Hamburger 4MSM bound (Algorithm 3)"),
+                           .resources = prefilteredResources({GL_RGBA16, GL_RGBA32F}));
 
 }  // namespace
 }  // namespace testbed

@@ -4,6 +4,21 @@
 
 namespace testbed {
 
+std::vector<PassDeclaration> prefilteredPasses(std::string momentsStep, std::string visibilityStep) {
+  return {{.name = "moments", .paperStep = std::move(momentsStep)},
+          {.name = "blur", .paperStep = "the pre-filter: a separable Gaussian over the moments"},
+          {.name = "visibility", .paperStep = std::move(visibilityStep)}};
+}
+
+std::vector<ResourceDeclaration> prefilteredResources(const std::vector<GLenum>& momentFormats) {
+  std::vector<GLenum> map = momentFormats;
+  for (DepthFormat depth : {DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F}) map.push_back(depthInternalFormat(depth));
+  std::vector<GLenum> scratch = momentFormats;
+  scratch.push_back(GL_RGBA32F);  // narrow formats packed four texels to one (separable_blur.h)
+  return {{.name = "moment-map", .formats = map, .size = SizeRule::ShadowMap, .role = ResourceRole::Paper},
+          {.name = "blur-scratch", .formats = scratch, .size = SizeRule::ShadowMap, .role = ResourceRole::Paper}};
+}
+
 void PrefilteredBase::configureMoments(const MomentsPass::Parameters& moments) { moments_.configure(moments); }
 
 void PrefilteredBase::setEncoding(MomentsFormat format, glm::vec4 params) {

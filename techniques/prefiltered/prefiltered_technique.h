@@ -4,6 +4,9 @@
 // receiver. A technique derives PrefilteredTechnique<P>, declares its parameters (its
 // own, then the MomentsPass ones as `moments`) and, in configured(), sets its
 // MomentsFormat and the four numbers its GLSL entry points read.
+#include <string>
+#include <vector>
+
 #include <glm/glm.hpp>
 
 #include "techniques/prefiltered/moments_pass.h"
@@ -12,6 +15,13 @@
 #include "testbed/technique/with_parameters.h"
 
 namespace testbed {
+
+// What vsm, esm, evsm and msm declare (declaration.h): the moments pass, implementing
+// `momentsStep`, the blur (the pre-filter every one of their papers has), and the
+// visibility, implementing `visibilityStep`; the moments stored as one of `momentFormats`
+// (with the depth buffer they are drawn with) and the blur's scratch.
+std::vector<PassDeclaration> prefilteredPasses(std::string momentsStep, std::string visibilityStep);
+std::vector<ResourceDeclaration> prefilteredResources(const std::vector<GLenum>& momentFormats);
 
 class PrefilteredBase : public ShadowTechnique {
  public:

@@ -29,7 +29,9 @@ class VarianceShadowMap final : public PrefilteredTechnique<VsmParameters> {
 
 TESTBED_REGISTER_TECHNIQUE(VarianceShadowMap, .id = "vsm", .output = OutputKind::Filtered,
                            .citation = "Donnelly & Lauritzen, Variance shadow maps, I3D 2006",
-                           .summary = "variance shadow maps: (z, z^2) in RG32F, Gaussian-filtered; Chebyshev upper bound");
+                           .summary = "variance shadow maps: (z, z^2) in RG32F, Gaussian-filtered; Chebyshev upper bound",
+                           .passes = prefilteredPasses("the mean and mean square of light depth (Donnelly & Lauritzen, I3D 2006)", "Chebyshev's upper bound"),
+                           .resources = prefilteredResources({GL_RG32F}));
 
 }  // namespace
 }  // namespace testbed

@@ -11,6 +11,16 @@ void reflectKernel(ParameterBinder& b, int& kernel) {
   b.integer("kernel", kernel, 3, 1, 31, "filter width k in texels (k×k revectorized taps, odd)").oddOnly();
 }
 
+std::vector<PassDeclaration> singlePassPasses(std::string paperStep) {
+  return {ShadowMapPass::declaredPass(), EdgeSplitPass::classifyingDraw("classify"),
+          {.name = "revectorize", .paperStep = std::move(paperStep)}};
+}
+
+std::vector<ResourceDeclaration> singlePassResources(DepthImage::Layout fastLayout) {
+  return {ShadowMapPass::declaredMap(), DepthImage::declared(fastLayout), EdgeSplitPass::declaredMarks(),
+          Common::declaredDebugView()};
+}
+
 void SinglePassBase::configureCommon(const CommonParameters& parameters) {
   shadowMap_.configure(parameters.shadowMap);
   common_.configure(parameters);

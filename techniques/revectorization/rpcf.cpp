@@ -12,6 +12,18 @@ namespace {
 
 const char* kCitation = "Macedo, Apolinário, Revectorization-Based Shadow Mapping, GI 2016";
 
+// The family's, the fast path's tile bounds (rpcf_tiles.h) and the Texels depth image.
+std::vector<PassDeclaration> rpcfPasses(std::string paperStep) {
+  auto passes = singlePassPasses(std::move(paperStep));
+  passes.push_back(RpcfTiles::declaredPass());
+  return passes;
+}
+std::vector<ResourceDeclaration> rpcfResources() {
+  auto resources = singlePassResources(DepthImage::Layout::Texels);
+  resources.push_back(RpcfTiles::declaredBounds());
+  return resources;
+}
+
 // A k×k box of revectorized taps: the kernel is compiled into the screen pass (rpcf.glsl),
 // so its tap loops unroll; on the fast path the classifying draw reads the tile bounds
 // (rpcf_tiles.h). P holds the kernel as `kernel`.
@@ -68,9 +80,11 @@ class RpcfRsmss final : public Rpcf<RpcfRsmssParameters> {
 };
 
 TESTBED_REGISTER_TECHNIQUE(RpcfSmsr, .id = "rpcf-smsr", .output = OutputKind::Filtered, .citation = kCitation,
-                           .summary = "PCF whose k×k taps are each revectorized by SMSR (eq. 2)");
+                           .summary = "PCF whose k×k taps are each revectorized by SMSR (eq. 2)",
+                           .passes = rpcfPasses("RPCF over SMSR, GI 2016 §3.4 eq. 2"), .resources = rpcfResources());
 TESTBED_REGISTER_TECHNIQUE(RpcfRsmss, .id = "rpcf-rsmss", .output = OutputKind::Filtered, .citation = kCitation,
-                           .summary = "PCF whose k×k taps are each smoothed by RSMSS (eq. 3)");
+                           .summary = "PCF whose k×k taps are each smoothed by RSMSS (eq. 3)",
+                           .passes = rpcfPasses("RPCF over RSMSS, GI 2016 §3.4 eq. 3"), .resources = rpcfResources());
 
 }  // namespace
 }  // namespace testbed::revectorization

@@ -10,6 +10,16 @@ namespace {
 constexpr int kTilesUnit = 3;
 }
 
+PassDeclaration RpcfTiles::declaredPass() {
+  return {.name = "tile-bounds",
+          .paperStep = "device: each 2×2 tile's depth bounds, for the classifying draw",
+          .only = TechniquePath::Fast};
+}
+
+ResourceDeclaration RpcfTiles::declaredBounds() {
+  return {.name = "rpcf-tile-bounds", .formats = {GL_RG32F}, .size = SizeRule::HalfShadowMap, .role = ResourceRole::Device};
+}
+
 void RpcfTiles::render(const Texture& shadowMap, int kernel, PassTimer& timer) {
   if (kernel != kernel_ || !program_) {
     kernel_ = kernel;
@@ -17,9 +27,9 @@ void RpcfTiles::render(const Texture& shadowMap, int kernel, PassTimer& timer) {
                                  "#define RPCF_APRON " + std::to_string(kernel / 2) + "\n");
   }
   const glm::ivec2 size((shadowMap.width() + 1) / 2, (shadowMap.height() + 1) / 2);
-  GpuMemoryLedger::Label label("rpcf-tile-bounds", ResourceRole::Device);
+  auto label = allocating(declaredBounds());
   if (target_.ensure({.size = size, .color = GL_RG32F})) target_.color().setFilter(GL_NEAREST, GL_NEAREST);
-  auto scope = timer.scope("tile-bounds");
+  auto scope = timer.scope(declaredPass().name);
   bindShadowMap(program_, shadowMap);
   screen_.draw(program_, target_.framebuffer(), size);
 }

@@ -9,11 +9,15 @@
 #include "testbed/gl/pass_timer.h"
 #include "testbed/gl/render_target.h"
 #include "testbed/render/screen_pass.h"
+#include "testbed/technique/declaration.h"
 
 namespace testbed::revectorization {
 
 class RpcfTiles {
  public:
+  // Its pass and target, devices of the fast path (declaration.h).
+  static PassDeclaration declaredPass();
+  static ResourceDeclaration declaredBounds();
   // The tiles of `shadowMap` for kernel width `kernel`, timed as "tile-bounds".
   void render(const Texture& shadowMap, int kernel, PassTimer& timer);
   // Binds them as uRpcfTiles to a program of the screen pass.

@@ -18,7 +18,9 @@ class Rsmss final : public SinglePassTechnique<CommonParameters> {
 
 TESTBED_REGISTER_TECHNIQUE(Rsmss, .id = "rsmss", .output = OutputKind::Filtered,
                            .citation = "Macedo, Apolinário, Revectorization-Based Shadow Mapping, GI 2016",
-                           .summary = "revectorization-based silhouette smoothing: continuous visibility over both edge sides");
+                           .summary = "revectorization-based silhouette smoothing: continuous visibility over both edge sides",
+                           .passes = singlePassPasses("RSMSS, GI 2016 §3.3"),
+                           .resources = singlePassResources());
 
 }  // namespace
 }  // namespace testbed::revectorization

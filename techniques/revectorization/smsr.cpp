@@ -26,7 +26,9 @@ class Smsr final : public WithVisibilityChoice<SinglePassTechnique<SmsrParameter
 
 TESTBED_REGISTER_TECHNIQUE(Smsr, .id = "smsr", .output = OutputKind::Hard,
                            .citation = "Macedo, Apolinário, Revectorization-Based Shadow Mapping, GI 2016",
-                           .summary = "single-pass shadow map silhouette revectorization (hard, light-space traversal)");
+                           .summary = "single-pass shadow map silhouette revectorization (hard, light-space traversal)",
+                           .passes = singlePassPasses("single-pass SMSR, GI 2016 §3.2"),
+                           .resources = singlePassResources());
 
 }  // namespace
 }  // namespace testbed::revectorization

@@ -22,6 +22,11 @@ namespace {
 // The family's parameters only.
 class SmsrTwoPass final : public WithParameters<CommonParameters> {
  public:
+  // Pass 1's screen-size map.
+  static ResourceDeclaration declaredDiscontinuityMap() {
+    return {.name = "discontinuity-map", .formats = {GL_RGBA8}, .size = SizeRule::Screen, .role = ResourceRole::Paper};
+  }
+
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {
     if (!discProgram_) {
       discProgram_ = Program::graphics("testbed/render/gbuffer.vert",
@@ -30,7 +35,7 @@ class SmsrTwoPass final : public WithParameters<CommonParameters> {
     }
     {
       // The G-buffer's depth, read only: pass 1 draws where it is equal.
-      GpuMemoryLedger::Label label("discontinuity-map", ResourceRole::Paper);
+      auto label = allocating(declaredDiscontinuityMap());
       disc_.ensure({.size = in.size, .color = GL_RGBA8, .borrowedDepth = &in.gbuffer.depth()});
     }
     shadowMap_.render(in, timer);
@@ -111,7 +116,14 @@ class SmsrTwoPass final : public WithParameters<CommonParameters> {
 
 TESTBED_REGISTER_TECHNIQUE(SmsrTwoPass, .id = "smsr-2pass", .output = OutputKind::Hard,
                            .citation = "Bondarev, Shadow map silhouette revectorization, I3D 2014",
-                           .summary = "two-pass SMSR: screen-space discontinuity map, then a screen-space edge search");
+                           .summary = "two-pass SMSR: screen-space discontinuity map, then a screen-space edge search",
+                           .passes = {ShadowMapPass::declaredPass(),
+                                      {.name = "discontinuity", .paperStep = "pass 1: the discontinuity map (Bondarev, I3D 2014)"},
+                                      EdgeSplitPass::classifyingDraw("classify"),
+                                      {.name = "revectorize", .paperStep = "pass 2: the screen-space search and revectorization"}},
+                           // No depth image: its programs read stored depths by gathers only.
+                           .resources = {ShadowMapPass::declaredMap(), SmsrTwoPass::declaredDiscontinuityMap(),
+                                         EdgeSplitPass::declaredMarks(), Common::declaredDebugView()});
 
 }  // namespace
 }  // namespace testbed::revectorization

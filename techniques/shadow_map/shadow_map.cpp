@@ -23,7 +23,9 @@ class PlainShadowMap final : public ShadowMapScreenTechnique<PlainShadowMapParam
 
 TESTBED_REGISTER_TECHNIQUE(PlainShadowMap, .id = "sm", .output = OutputKind::Hard,
                            .citation = "Williams, Casting curved shadows on curved surfaces, SIGGRAPH 1978",
-                           .summary = "plain shadow mapping: one nearest depth test per pixel");
+                           .summary = "plain shadow mapping: one nearest depth test per pixel",
+                           .passes = PlainShadowMap::declaredPasses("the depth test per pixel (Williams, SIGGRAPH 1978)"),
+                           .resources = PlainShadowMap::declaredResources());
 
 }  // namespace
 }  // namespace testbed

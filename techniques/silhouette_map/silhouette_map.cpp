@@ -35,6 +35,22 @@ struct SilhouetteMapParameters {
 
 class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
  public:
+  static std::vector<PassDeclaration> declaredPasses() {
+    return {ShadowMapPass::declaredPass(),
+            {.name = "silhouette-map", .paperStep = "the silhouette map: one point per dual-grid texel (Sen et al., SIGGRAPH 2003)"},
+            EdgeSplitPass::classifyingDraw("visibility"),
+            {.name = "silhouette-pixels", .paperStep = "the corner depth tests and the silhouette points' edges (Sen et al.)"}};
+  }
+  // In the order the allocations above index them.
+  static std::vector<ResourceDeclaration> declaredResources() {
+    return {ShadowMapPass::declaredMap(),
+            {.name = "silhouette-map", .formats = {GL_RG16}, .size = SizeRule::ShadowMap, .role = ResourceRole::Paper},
+            {.name = "silhouette-edges", .formats = {kBufferFormat}, .size = SizeRule::Scene, .role = ResourceRole::Paper},
+            // the vertex cache's: each edge's quad drawn from four shared vertices
+            {.name = "quad-indices", .formats = {kBufferFormat}, .size = SizeRule::Scene, .role = ResourceRole::Device},
+            EdgeSplitPass::declaredMarks()};
+  }
+
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {
     prepare(in);
     shadowMap_.render(in, timer);
@@ -64,7 +80,7 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
     }
     const int side = in.shadowMapSize + 1;  // one more than the depth map: see silhouette_map.glsl
     // 16-bit unorm offsets in the texel: 1/65535 of a texel, the notes ask for ≥ fp16.
-    GpuMemoryLedger::Label label("silhouette-map", ResourceRole::Paper);
+    auto label = allocating(declaredResources()[1]);
     silhouettes_.ensure({.size = glm::ivec2(side), .color = GL_RG16});
     if (topologyScene_ != &in.scene || topologyRevision_ != in.scene.geometryRevision ||
         topology_.size() != in.scene.objects.size()) {
@@ -82,7 +98,7 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
     for (const auto& mesh : topology_) edges += appendSilhouetteEdges(mesh, in.light, endpoints_);
     const std::size_t bytes = endpoints_.size() * sizeof(glm::vec4);
     if (bytes > edgeBuffer_.bytes()) {
-      GpuMemoryLedger::Label label("silhouette-edges", ResourceRole::Paper);
+      auto label = allocating(declaredResources()[2]);
       edgeBuffer_ = Buffer::create(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
     if (bytes > 0) glNamedBufferSubData(edgeBuffer_.id(), 0, static_cast<GLsizeiptr>(bytes), endpoints_.data());
@@ -116,7 +132,7 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
       indices.reserve(6 * kQuadChunkEdges);
       for (std::size_t e = 0; e < kQuadChunkEdges; ++e)
         for (const std::size_t corner : {0, 1, 2, 0, 2, 3}) indices.push_back(static_cast<GLushort>(4 * e + corner));
-      GpuMemoryLedger::Label label("quad-indices", ResourceRole::Device);  // the vertex cache's
+      auto label = allocating(declaredResources()[3]);
       quadIndices_ = Buffer::create(indices.size() * sizeof(GLushort), indices.data());
       glVertexArrayElementBuffer(quadVertexArray_.id(), quadIndices_.id());
     }
@@ -143,7 +159,8 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
 
 TESTBED_REGISTER_TECHNIQUE(SilhouetteMap, .id = "silhouette-map", .output = OutputKind::Hard,
                            .citation = "Sen, Cammarano, Hanrahan, Shadow silhouette maps, SIGGRAPH 2003",
-                           .summary = "depth map plus one silhouette point per dual-grid texel; piecewise-linear shadow edges");
+                           .summary = "depth map plus one silhouette point per dual-grid texel; piecewise-linear shadow edges",
+                           .passes = SilhouetteMap::declaredPasses(), .resources = SilhouetteMap::declaredResources());
 
 }  // namespace
 }  // namespace testbed

@@ -21,6 +21,7 @@
 #include "testbed/harness/sequence.h"
 #include "testbed/metrics/metrics.h"
 #include "testbed/scene/primitives.h"
+#include "testbed/sweep/sweep_passes.h"
 #include "testbed/sweep/sweep_records.h"
 #include "testbed/sweep/sweep_scene.h"
 #include "testbed/sweep/sweep_table.h"
@@ -101,6 +102,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
     const Shard shard = parseShard(options->shard);
     loadPlugins(options->common.plugins);
     const SweepSpec spec = loadSweepSpec(options->spec);
+    checkDeclaredPasses(spec);  // before the first frame, as the scenes and parameters below
     const SweepPlan plan = planSweep(spec, overrides);
 
     // Cells of this shard, grouped by frame set-up (one G-buffer per set-up).

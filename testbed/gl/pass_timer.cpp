@@ -1,5 +1,7 @@
 #include "testbed/gl/pass_timer.h"
 
+#include <algorithm>
+
 #include "testbed/core/error.h"
 
 namespace testbed {
@@ -27,6 +29,12 @@ const PassTimer::Slot& PassTimer::takeSlot() {
 }
 
 PassTimer::Scope::Scope(PassTimer& timer, std::string name) : timer_(timer) {
+  if (timer.declared_ && std::find(timer.declared_->begin(), timer.declared_->end(), name) == timer.declared_->end()) {
+    std::string declared;
+    for (const auto& d : *timer.declared_) declared += (declared.empty() ? "" : ", ") + d;
+    throw UndeclaredPassError("pass '" + name + "' is not one the technique declares for this path (" + declared +
+                              "): declare it in its TechniqueInfo::passes");
+  }
   if (timer.open_) throw GlError("PassTimer: scope '" + name + "' opened inside another scope");
   timer.open_ = true;
   Entry entry{std::move(name), timer.takeSlot()};

@@ -20,12 +20,17 @@
 // per target; scopes never nest, so each scope owns one query of each target and a frame's
 // totals are the sums over its scopes. Without the extension there are no counts at all
 // (PassTimes::work empty), never zeros.
+//
+// A technique's timer knows the passes it declared (technique/declaration.h): a scope of
+// any other name is refused, before anything is timed, so a renamed or new pass cannot
+// slip past the sweep specs and baselines that name passes.
 #include <array>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -64,6 +69,12 @@ struct PassTimes {
   std::optional<PassWork> work;          // empty where the GL has no pipeline statistics
 };
 
+// A scope named after no declared pass: a technique's code and its declaration disagree.
+class UndeclaredPassError : public std::logic_error {
+ public:
+  using std::logic_error::logic_error;
+};
+
 // Whether the current context offers ARB_pipeline_statistics_query.
 bool workCountersAvailable();
 
@@ -88,6 +99,10 @@ class PassTimer {
   };
   [[nodiscard]] Scope scope(std::string name) { return Scope(*this, std::move(name)); }
 
+  // From now on, a scope whose name is not among `names` throws UndeclaredPassError.
+  // Without a call every name is taken (the harness's own G-buffer timer).
+  void declarePasses(std::vector<std::string> names) { declared_ = std::move(names); }
+
   // Waits for the queries of the frame and returns its times; resets the timer.
   PassTimes resolve();
 
@@ -102,6 +117,7 @@ class PassTimer {
   };
   const Slot& takeSlot();
   bool countWork_;
+  std::optional<std::vector<std::string>> declared_;
   std::vector<Entry> entries_;
   std::vector<Slot> pool_;
   std::size_t used_ = 0;

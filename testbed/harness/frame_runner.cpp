@@ -86,7 +86,10 @@ FrameInputs FrameRunner::inputs() const {
 
 TechniqueSession::TechniqueSession(FrameRunner& runner, const RegisteredTechnique& technique,
                                    const ParameterSet& parameters)
-    : runner_(runner), id_(technique.info->id) {
+    : runner_(runner), info_(*technique.info), id_(technique.info->id) {
+  // A declared technique times the passes of the run's path only (the ground truth
+  // declares none).
+  if (!info_.passes.empty()) timer_.declarePasses(passNamesOn(info_.passes, runner.path()));
   const glm::ivec2 size = runner.settings().size;
   target_.ensure({.size = size, .color = GL_R32F});  // before the ledger: the harness's, not the technique's
   // Everything the technique allocates, now or while rendering, is booked in its ledger.
@@ -112,6 +115,11 @@ TechniqueSession::Frame TechniqueSession::renderFrame() {
   Frame frame{timer_.resolve(), std::chrono::duration<double, std::milli>(end - start).count()};
   checkGlError("rendering technique " + id_);
   return frame;
+}
+
+std::vector<GpuMemoryLedger::Resource> TechniqueSession::memory() const {
+  if (info_.passes.empty()) return ledger_.resources();
+  return declaredMemory(id_, info_.resources, ledger_.resources());
 }
 
 ImageF TechniqueSession::visibility() const {

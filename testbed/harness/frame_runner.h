@@ -72,7 +72,9 @@ class TechniqueSession {
   };
   Frame renderFrame();
   std::uint64_t memoryBytes() const { return ledger_.bytes(); }
-  std::vector<GpuMemoryLedger::Resource> memory() const { return ledger_.resources(); }
+  // memoryBytes() split by resource, each checked against the technique's declaration
+  // (technique/declaration.h: throws DeclarationError on an undeclared allocation).
+  std::vector<GpuMemoryLedger::Resource> memory() const;
   // Reads the last frame's visibility: one channel, top-down, NaN where no receiver.
   ImageF visibility() const;
   const ShadowTechnique& technique() const { return *instance_; }
@@ -80,6 +82,7 @@ class TechniqueSession {
 
  private:
   FrameRunner& runner_;
+  const TechniqueInfo& info_;
   GpuMemoryLedger ledger_;
   RenderTarget target_;  // its colour: the visibility, R32F
   PassTimer timer_;

@@ -3,12 +3,22 @@
 namespace testbed {
 
 std::string DepthImage::defines() const {
+  // The unit, written once here for C++ and GLSL alike.
+  const std::string unit = "#define RV_DEPTH_IMAGE_UNIT " + std::to_string(kUnit) + "\n";
   switch (layout_) {
-    case Layout::Texture: return "#define RV_DEPTH_TEXTURE 1\n";
-    case Layout::Texels: return "#define RV_DEPTH_TEXELS 1\n";
+    case Layout::Texture: return unit + "#define RV_DEPTH_TEXTURE 1\n";
+    case Layout::Texels: return unit + "#define RV_DEPTH_TEXELS 1\n";
     case Layout::Blocks: break;
   }
-  return "";
+  return unit;
+}
+
+ResourceDeclaration DepthImage::declared(Layout layout) {
+  const bool texels = layout == Layout::Texels;
+  return {.name = "depth-image",
+          .formats = {GLenum(texels ? GL_R32F : GL_RGBA32F)},
+          .size = texels ? SizeRule::ShadowMap : SizeRule::HalfShadowMap,
+          .role = ResourceRole::Device};
 }
 
 void DepthImage::update(const Texture& shadowMap) {
@@ -24,7 +34,7 @@ void DepthImage::update(const Texture& shadowMap) {
   const glm::ivec2 size = texels ? glm::ivec2(shadowMap.width(), shadowMap.height())
                                  : glm::ivec2((shadowMap.width() + 1) / 2, (shadowMap.height() + 1) / 2);
   {
-    GpuMemoryLedger::Label label("depth-image", ResourceRole::Device);
+    auto label = allocating(declared(layout_));
     image_.ensure({.size = size, .color = GLenum(texels ? GL_R32F : GL_RGBA32F)});
   }
   glBindTextureUnit(0, shadowMap.id());

@@ -18,6 +18,7 @@
 #include "testbed/gl/objects.h"
 #include "testbed/gl/render_target.h"
 #include "testbed/render/screen_pass.h"
+#include "testbed/technique/declaration.h"
 
 namespace testbed {
 
@@ -25,9 +26,13 @@ class DepthImage {
  public:
   enum class Layout { Texture, Blocks, Texels };
 
-  // revectorization.glsl's uShadowImage; clear of the image units the family's and
-  // EDTSM's shaders use otherwise.
+  // revectorization.glsl's uShadowImage (defines() hands it to GLSL as
+  // RV_DEPTH_IMAGE_UNIT); clear of the image units the family's and EDTSM's shaders use
+  // otherwise.
   static constexpr GLuint kUnit = 5;
+
+  // The copy as a technique whose fast path lays it out as `layout` (not Texture) declares it.
+  static ResourceDeclaration declared(Layout layout);
 
   // Copies `shadowMap` (a depth or float texture) into the image, resized to match (booked
   // as the device "depth-image"), and binds it; for Texture, releases any copy instead.
@@ -35,7 +40,7 @@ class DepthImage {
   // Binds the image at kUnit for reading (nothing for Texture).
   void bind() const;
   // The layout (Blocks unless set), and the defines revectorization.glsl (and
-  // depth_image.frag) read it from.
+  // depth_image.frag) read it and the image's unit from.
   void setLayout(Layout layout) { layout_ = layout; }
   Layout layout() const { return layout_; }
   std::string defines() const;

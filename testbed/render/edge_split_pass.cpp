@@ -2,6 +2,16 @@
 
 namespace testbed {
 
+PassDeclaration EdgeSplitPass::classifyingDraw(std::string classifyPass) {
+  return {.name = std::move(classifyPass),
+          .paperStep = "device: answers the pixels without an edge texel and marks the rest",
+          .only = TechniquePath::Fast};
+}
+
+ResourceDeclaration EdgeSplitPass::declaredMarks() {
+  return {.name = "edge-marks", .formats = {GL_DEPTH_COMPONENT16}, .size = SizeRule::Screen, .role = ResourceRole::Device};
+}
+
 void EdgeSplitPass::setDefines(const std::string& defines) {
   if (defines == defines_) return;
   defines_ = defines;
@@ -23,7 +33,7 @@ void EdgeSplitPass::prepare(const VisibilityTarget& out, TechniquePath path) {
   }
   // Depth 0 marks an edge pixel, 1 one the classifying draw answered.
   const glm::ivec2 size(out.texture.width(), out.texture.height());
-  GpuMemoryLedger::Label label("edge-marks", ResourceRole::Device);
+  auto label = allocating(declaredMarks());
   target_.ensure({.size = size, .depth = GL_DEPTH_COMPONENT16, .borrowedColor = &out.texture});
 }
 

@@ -13,6 +13,7 @@
 #include "testbed/gl/objects.h"
 #include "testbed/gl/pass_timer.h"
 #include "testbed/gl/render_target.h"
+#include "testbed/technique/declaration.h"
 #include "testbed/technique/technique.h"
 
 namespace testbed {
@@ -22,6 +23,12 @@ class EdgeSplitPass {
   // `fragmentKey`: a shader defining screenClassify and screenVisibility, ending in
   // testbed/glsl/screen_pass.glsl.
   explicit EdgeSplitPass(std::string fragmentKey) : fragmentKey_(std::move(fragmentKey)) {}
+
+  // A technique using it declares `classifyPass` with classifyingDraw() (unless that name
+  // is a pass of both paths of its own) and the marks with declaredMarks(); `edgePass`
+  // implements its paper's step.
+  static PassDeclaration classifyingDraw(std::string classifyPass);
+  static ResourceDeclaration declaredMarks();
 
   // Prepended to both programs' sources (after #version); a change rebuilds them.
   void setDefines(const std::string& defines);

@@ -34,9 +34,21 @@ float polygonOffsetUnits(DepthFormat format, float units16) {
 }
 }  // namespace
 
+PassDeclaration ShadowMapPass::declaredPass() {
+  return {.name = "shadow-map", .paperStep = "the light's depth map (Williams, SIGGRAPH 1978)"};
+}
+
+ResourceDeclaration ShadowMapPass::declaredMap() {
+  return {.name = "shadow-map",
+          .formats = {depthInternalFormat(DepthFormat::D16), depthInternalFormat(DepthFormat::D24),
+                      depthInternalFormat(DepthFormat::D32F)},
+          .size = SizeRule::ShadowMap,
+          .role = ResourceRole::Paper};
+}
+
 void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
   const GLenum format = depthInternalFormat(in.depthFormat);
-  GpuMemoryLedger::Label label("shadow-map", ResourceRole::Paper);
+  auto label = allocating(declaredMap());
   // Border depth 0: every lookup outside the map reads shadow (testbed/glsl/receiver.glsl).
   if (target_.ensure({.size = glm::ivec2(in.shadowMapSize), .depth = format}))
     target_.depth().setWrap(GL_CLAMP_TO_BORDER, glm::vec4(0.0f));
@@ -50,7 +62,7 @@ void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
                                 floatDepth ? "#define CONSTANT_OFFSET_IN_SHADER\n" : "");
   const float units = parameters_.offsetUnits;
 
-  auto scope = timer.scope("shadow-map");
+  auto scope = timer.scope(declaredPass().name);
   glBindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer().id());
   glViewport(0, 0, in.shadowMapSize, in.shadowMapSize);
   glClearNamedFramebufferfi(target_.framebuffer().id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);

@@ -12,6 +12,7 @@
 
 #include "testbed/gl/objects.h"
 #include "testbed/gl/pass_timer.h"
+#include "testbed/technique/declaration.h"
 #include "testbed/gl/render_target.h"
 #include "testbed/gl/depth_format.h"
 #include "testbed/render/gpu_scene.h"
@@ -31,6 +32,10 @@ class ShadowMapPass {
     void reflect(ParameterBinder& b);
   };
   void configure(const Parameters& parameters) { parameters_ = parameters; }
+
+  // Its pass and its map as the techniques that use it declare them (declaration.h).
+  static PassDeclaration declaredPass();
+  static ResourceDeclaration declaredMap();
 
   // Renders the light's depth into the map (timed as "shadow-map"); (re)allocates the
   // texture when size or format change.

@@ -4,6 +4,10 @@
 
 namespace testbed {
 
+std::vector<PassDeclaration> ShadowMapScreenBase::declaredPasses(std::string paperStep, std::string passName) {
+  return {ShadowMapPass::declaredPass(), {.name = std::move(passName), .paperStep = std::move(paperStep)}};
+}
+
 void ShadowMapScreenBase::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
   if (!program_) program_ = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_);
   shadowMap_.render(in, timer);

@@ -6,6 +6,7 @@
 // passes, timing, bindings and the shadow map's parameters live here once.
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "testbed/render/screen_pass.h"
 #include "testbed/render/shadow_map_pass.h"
@@ -17,6 +18,11 @@ namespace testbed {
 // The passes, independent of the parameter struct (compiled once, in the testbed).
 class ShadowMapScreenBase : public ShadowTechnique {
  public:
+  // What a technique of this shape declares (declaration.h): the shadow map's pass and map,
+  // and its screen pass `passName`, which implements `paperStep`.
+  static std::vector<PassDeclaration> declaredPasses(std::string paperStep, std::string passName = "visibility");
+  static std::vector<ResourceDeclaration> declaredResources() { return {ShadowMapPass::declaredMap()}; }
+
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) final;
 
  protected:

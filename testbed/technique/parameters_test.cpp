@@ -95,6 +95,8 @@ TEST(Registry, EveryTechniquePassesTheSpecChecks) {
 TEST(Registry, SpecChecksNameWhatIsWrong) {
   TechniqueInfo info;
   info.id = "demo";
+  EXPECT_EQ(techniqueProblem(info), "technique 'demo': declares no pass (TechniqueInfo::passes)");
+  info.passes = {{.name = "visibility", .paperStep = "the shadow test"}};
   EXPECT_EQ(techniqueProblem(info), "");
   info.parameters = {ParameterSpec::real("bias", 0.0, -1.0, 1.0, "a"), ParameterSpec::real("bias", 0.0, -1.0, 1.0, "b")};
   EXPECT_EQ(techniqueProblem(info), "technique 'demo': parameter 'bias': declared twice");
@@ -109,6 +111,14 @@ TEST(Registry, SpecChecksNameWhatIsWrong) {
   info.parameters = {ParameterSpec::boolean("two words", false, "not plain")};
   EXPECT_EQ(techniqueProblem(info), "technique 'demo': parameter 'two words': name must be letters, digits and '_'");
   info.parameters = {};
+  info.passes.push_back({.name = "visibility", .paperStep = "again"});
+  EXPECT_EQ(techniqueProblem(info), "technique 'demo': pass 'visibility' declared twice");
+  info.passes = {{.name = "visibility", .paperStep = ""}};
+  EXPECT_EQ(techniqueProblem(info), "technique 'demo': pass 'visibility' names no paper step");
+  info.passes = {{.name = "visibility", .paperStep = "the shadow test"}};
+  info.resources = {{.name = "map", .formats = {GL_R32F}}, {.name = "map", .formats = {GL_R8}}};
+  EXPECT_EQ(techniqueProblem(info), "technique 'demo': resource 'map' declared twice");
+  info.resources = {};
   info.id = "a/b";
   EXPECT_EQ(techniqueProblem(info), "technique id 'a/b' must be letters, digits, '-' and '_'");
 }

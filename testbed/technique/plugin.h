@@ -6,7 +6,8 @@
 //   class MyTechnique : public testbed::WithParameters<MyParameters> { ... };
 //   TESTBED_PLUGIN(registrar) {
 //     registrar.add<MyTechnique>({.id = "my-tech", .output = testbed::OutputKind::Hard,
-//                                 .citation = "Author, Title, Venue Year", .summary = "one line"});
+//                                 .citation = "Author, Title, Venue Year", .summary = "one line",
+//                                 .passes = {...}, .resources = {...}});
 //   }
 //
 // The plugin is built against the testbed's headers only (cmake: testbed_add_plugin) and
@@ -27,8 +28,9 @@
 // built for another version instead of crashing in it.
 // 2: describe() and ParameterBinder replace info() and staticInfo(); 3: WithParameters
 // owns configure(), the registration takes the description and declares the parameters;
-// 4: ShadowMapScreenTechnique::setUniforms takes the frame's inputs, glsl/light.glsl.
-#define TESTBED_PLUGIN_API_VERSION 4
+// 4: ShadowMapScreenTechnique::setUniforms takes the frame's inputs, glsl/light.glsl;
+// 5: TechniqueInfo declares the passes and resources (declaration.h).
+#define TESTBED_PLUGIN_API_VERSION 5
 
 namespace testbed {
 

@@ -119,6 +119,8 @@ std::string techniqueProblem(const TechniqueInfo& info) {
     if (!names.insert(spec.name).second) return parameter + "declared twice";
     if (const std::string problem = parameterSpecProblem(spec); !problem.empty()) return parameter + problem;
   }
+  if (const std::string problem = declarationProblem(info.passes, info.resources); !problem.empty())
+    return "technique '" + info.id + "': " + problem;
   return "";
 }
 

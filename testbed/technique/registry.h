@@ -50,7 +50,8 @@ struct TechniqueRegistration {
 
 // What is wrong with a technique's declaration, empty when nothing is: an id or parameter
 // name that is not plain (ids become file names, parameter names `--set T.name=v` words),
-// a parameter declared twice, or a spec that fails parameterSpecProblem(). The plugin
+// a parameter declared twice, a spec that fails parameterSpecProblem(), or a pass and
+// resource declaration that fails declarationProblem(). The plugin
 // loader turns a problem into an input error; tests/ check every in-tree technique.
 std::string techniqueProblem(const TechniqueInfo& info);
 

@@ -16,6 +16,7 @@
 #include "testbed/gl/depth_format.h"
 #include "testbed/scene/scene.h"
 #include "testbed/scene/view.h"
+#include "testbed/technique/declaration.h"
 #include "testbed/technique/parameter_binder.h"
 #include "testbed/technique/parameters.h"
 #include "testbed/technique/path.h"
@@ -27,14 +28,18 @@ class GBuffer;
 
 enum class OutputKind { Hard, Filtered };
 
-// A technique's registration (registry.h) gives id, output, citation and summary as
-// designated initializers and adds family and parameters; every member has an initializer.
+// A technique's registration (registry.h) gives id, output, citation, summary, passes and
+// resources as designated initializers and adds family and parameters; every member has an
+// initializer.
 struct TechniqueInfo {
   std::string id{};        // CLI name: "sm", "smsr", "rpcf-rsmss"
   std::string family{};    // the technique's folder, "shadow_map": set at registration (registry.h)
   OutputKind output = OutputKind::Hard;
   std::string citation{};  // "Williams 1978"
   std::string summary{};   // one line for `testbed list`
+  // Every pass it times and every resource it allocates, on either path (declaration.h).
+  std::vector<PassDeclaration> passes{};
+  std::vector<ResourceDeclaration> resources{};
   std::vector<ParameterSpec> parameters{};  // declaredParameters<P>() of its parameter struct
 };
 
@@ -65,8 +70,10 @@ class ShadowTechnique {
   // Called once with the validated parameters, before the first render. Techniques with
   // parameters derive WithParameters (with_parameters.h), which implements it.
   virtual void configure(const ParameterSet& parameters) = 0;
-  // Renders one frame. Every GPU pass runs inside a `timer.scope("name")`. GL objects may
-  // be (re)allocated here; their bytes are booked as this technique's memory.
+  // Renders one frame. Every GPU pass runs inside a `timer.scope("name")` of a pass its
+  // TechniqueInfo declares. GL objects may be (re)allocated here, each under the
+  // GpuMemoryLedger::Label of a declared resource; their bytes are booked as this
+  // technique's memory.
   virtual void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) = 0;
   // Colour images for people, e.g. a revectorization technique's discontinuity space
   // (`--set debug=discontinuity`): name → RGB image (top-down) of the last frame. `render`

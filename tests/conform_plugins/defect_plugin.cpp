@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "testbed/gl/objects.h"
+#include "testbed/render/shadow_map_screen_technique.h"
 #include "testbed/technique/plugin.h"
 #include "testbed/technique/with_parameters.h"
 
@@ -63,5 +64,8 @@ TESTBED_PLUGIN(registrar) {
   registrar.add<DefectTechnique>({.id = DEFECT_ID,
                                   .output = OutputKind::Hard,
                                   .citation = "a test fixture, no paper",
-                                  .summary = "sm with one planted defect for `testbed conform`"});
+                                  .summary = "sm with one planted defect for `testbed conform`",
+                                  // sm's, whose instance renders it
+                                  .passes = ShadowMapScreenBase::declaredPasses("the depth test per pixel"),
+                                  .resources = ShadowMapScreenBase::declaredResources()});
 }

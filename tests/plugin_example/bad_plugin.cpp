@@ -27,6 +27,7 @@ TechniqueInfo dummyInfo() {
 #else
   i.id = "bad-plugin";
 #endif
+  i.passes = {{.name = "nothing", .paperStep = "a fixture that draws nothing"}};
 #if defined(BAD_PARAMETER_SPEC)
   // A spec filled by hand, bypassing ParameterBinder (Dummy has no Parameters to replace it).
   i.parameters = {ParameterSpec::integer("kernel", 4, 1, 3, "default outside its own range")};

@@ -27,9 +27,12 @@ class ExampleShadowMap final : public ShadowMapScreenTechnique<ExampleParameters
 }  // namespace
 
 // Every field but `family` (this folder's name, cmake: testbed_add_plugin) and
-// `parameters` (ExampleParameters').
+// `parameters` (ExampleParameters'). `passes` and `resources` declare what it times and
+// allocates (testbed/technique/declaration.h): its base's shadow map and screen pass.
 TESTBED_PLUGIN(registrar) {
   registrar.add<ExampleShadowMap>({.id = "example-sm", .output = OutputKind::Hard,
                                    .citation = "Williams, Casting curved shadows on curved surfaces, SIGGRAPH 1978",
-                                   .summary = "plugin example: plain shadow mapping loaded with --plugin"});
+                                   .summary = "plugin example: plain shadow mapping loaded with --plugin",
+                                   .passes = ExampleShadowMap::declaredPasses("the depth test per pixel (Williams 1978)"),
+                                   .resources = ExampleShadowMap::declaredResources()});
 }

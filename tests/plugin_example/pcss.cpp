@@ -58,5 +58,8 @@ TESTBED_PLUGIN(registrar) {
   registrar.add<PercentageCloserSoftShadows>(
       {.id = "pcss", .output = OutputKind::Filtered,
        .citation = "Fernando, Percentage-Closer Soft Shadows, SIGGRAPH 2005 sketch",
-       .summary = "plugin example: blocker search, penumbra estimate, variable-size PCF"});
+       .summary = "plugin example: blocker search, penumbra estimate, variable-size PCF",
+       .passes = PercentageCloserSoftShadows::declaredPasses(
+           "blocker search, penumbra estimate and variable-size PCF in one screen pass (Fernando 2005)"),
+       .resources = PercentageCloserSoftShadows::declaredResources()});
 }

@@ -37,14 +37,16 @@ bool rvInsideMap(ivec2 t) {
 // of the same floats (cheaper to read one at a time on llvmpipe) in either of its layouts.
 // rvStoredDepth(t): the stored depth of texel t (inside the map), the very value that
 // shadowTestTexel's nearest lookup at the texel centre reads.
-const int kRvDepthImageUnit = 5;  // DepthImage::kUnit
+#ifndef RV_DEPTH_IMAGE_UNIT
+#error "compile with DepthImage::defines() (testbed/render/depth_image.h)"
+#endif
 #if defined(RV_DEPTH_TEXTURE)
 float rvStoredDepth(ivec2 t) { return texelFetch(uShadowMap, t, 0).r; }
 #elif defined(RV_DEPTH_TEXELS)
-layout(r32f, binding = kRvDepthImageUnit) uniform readonly image2D uShadowImage;
+layout(r32f, binding = RV_DEPTH_IMAGE_UNIT) uniform readonly image2D uShadowImage;
 float rvStoredDepth(ivec2 t) { return imageLoad(uShadowImage, t).r; }
 #else
-layout(rgba32f, binding = kRvDepthImageUnit) uniform readonly image2D uShadowImage;  // 2×2 blocks
+layout(rgba32f, binding = RV_DEPTH_IMAGE_UNIT) uniform readonly image2D uShadowImage;  // 2×2 blocks
 float rvStoredDepth(ivec2 t) {
   const vec4 block = imageLoad(uShadowImage, t >> 1);
   const vec2 row = (t.y & 1) != 0 ? block.zw : block.xy;

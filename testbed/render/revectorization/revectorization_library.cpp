@@ -50,9 +50,13 @@ void Common::renderDebug(const FrameInputs& in, const Texture& shadowMap, bool b
   renderDebugWith(debugProgram_, in.size);
 }
 
+ResourceDeclaration Common::declaredDebugView() {
+  return {.name = "debug-view", .formats = {GL_RGBA8}, .size = SizeRule::Screen, .role = ResourceRole::Device};
+}
+
 void Common::renderDebugWith(const Program& program, glm::ivec2 size) {
   {
-    GpuMemoryLedger::Label label("debug-view", ResourceRole::Device);  // only when a debug view is asked for
+    auto label = allocating(declaredDebugView());  // only when a debug view is asked for
     debugTarget_.ensure({.size = size, .color = GL_RGBA8});
   }
   const float black[4] = {0, 0, 0, 1};

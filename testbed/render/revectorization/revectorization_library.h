@@ -58,6 +58,8 @@ class Common {
   void renderDebugWith(const Program& program, glm::ivec2 size);
   void captureDebug(const Texture& rgba8, glm::ivec2 size);
   DebugView debugView() const { return parameters_.debug; }
+  // The debug view's target (a device: allocated only when a view is asked for).
+  static ResourceDeclaration declaredDebugView();
   std::vector<std::pair<std::string, ImageF>> debugImages() const;
 
  private:

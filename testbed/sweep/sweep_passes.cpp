@@ -1,0 +1,29 @@
+#include "testbed/sweep/sweep_passes.h"
+
+#include <algorithm>
+
+#include "testbed/core/error.h"
+#include "testbed/technique/registry.h"
+
+namespace testbed {
+
+void checkDeclaredPasses(const SweepSpec& spec) {
+  for (std::size_t row = 0; row < spec.rows.size(); ++row) {
+    const SweepRow& r = spec.rows[row];
+    if (!r.passes) continue;
+    for (const auto& id : r.techniques) {
+      if (id == kGroundTruthId) continue;
+      const std::vector<std::string> declared = passNames(findTechnique(id).info->passes);
+      if (declared.empty()) continue;  // a technique without a declaration reports its passes by rendering
+      for (const auto& pass : *r.passes) {
+        if (pass == "gbuffer" || std::find(declared.begin(), declared.end(), pass) != declared.end()) continue;
+        std::string known = "gbuffer";
+        for (const auto& name : declared) known += ", " + name;
+        throw InputError(spec.file.string() + ": rows[" + std::to_string(row) + "].passes: " + id +
+                         " declares no pass '" + pass + "' (its passes: " + known + ")");
+      }
+    }
+  }
+}
+
+}  // namespace testbed
