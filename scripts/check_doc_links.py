@@ -38,6 +38,8 @@ CONTINUATION = re.compile(r"\n[ \t]*(?://|#)[ \t]*")
 CODE_SUFFIXES = (".cpp", ".h", ".glsl", ".frag", ".vert", ".comp", ".geom", ".sh", ".py", ".cmake",
                  ".txt", ".sbatch", ".json")
 SKIP_DIRS = {".git", "build", "assets", "results", "node_modules"}
+# Other build folders (build-unity, build-sanitize) hold generated text too.
+SKIP_PREFIXES = ("build-",)
 # Its planted trees cite headings that do not exist, on purpose.
 SKIP_FILES = {os.path.join("tests", "doc_links_test.py")}
 
@@ -173,7 +175,7 @@ class Checker:
 
     def code_files(self):
         for directory, dirs, files in os.walk(self.root):
-            dirs[:] = sorted(d for d in dirs if d not in SKIP_DIRS and not d.startswith("."))
+            dirs[:] = sorted(d for d in dirs if d not in SKIP_DIRS and not d.startswith(".") and not d.startswith(SKIP_PREFIXES))
             for name in sorted(files):
                 path = os.path.join(directory, name)
                 if name.endswith(CODE_SUFFIXES) and os.path.relpath(path, self.root) not in SKIP_FILES:

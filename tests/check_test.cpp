@@ -20,7 +20,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const fs::path kResults = fs::path(TESTBED_SOURCE_DIR) / "results";
 
 using namespace testbed::test;
 
@@ -31,7 +30,7 @@ RunResult check(const std::vector<std::string>& args, const TempDir&) {
   return runTestbed(all, {.cwd = {}, .env = {}, .timeoutSeconds = 60});
 }
 
-json bunny512() { return json::parse(readFile(kResults / "bunny-512" / "metrics.json")); }
+json bunny512() { return json::parse(readFile(kCommittedResults / "bunny-512" / "metrics.json")); }
 
 std::size_t indexOf(const json& records, const std::string& technique) {
   for (std::size_t i = 0; i < records.size(); ++i)
@@ -41,8 +40,8 @@ std::size_t indexOf(const json& records, const std::string& technique) {
 
 TEST(CliCheck, SameFolderPasses) {
   TempDir tmp;
-  const RunResult r = check({"--baseline", (kResults / "bunny-512").string(), "--current",
-                          (kResults / "bunny-512" / "metrics.json").string()},
+  const RunResult r = check({"--baseline", (kCommittedResults / "bunny-512").string(), "--current",
+                          (kCommittedResults / "bunny-512" / "metrics.json").string()},
                          tmp);
   EXPECT_EQ(r.exitCode, 0) << r.err << r.out;
   EXPECT_NE(r.out.find("**PASS**: 0 regressions"), std::string::npos) << r.out;
@@ -50,7 +49,7 @@ TEST(CliCheck, SameFolderPasses) {
 
 TEST(CliCheck, EveryResultsFolderPasses) {
   TempDir tmp;
-  const RunResult r = check({"--baseline", kResults.string(), "--current", kResults.string()}, tmp);
+  const RunResult r = check({"--baseline", kCommittedResults.string(), "--current", kCommittedResults.string()}, tmp);
   EXPECT_EQ(r.exitCode, 0) << r.err << r.out;
   // 10 folders (5 scenes × 2 map sizes), every technique but the ground truth in each.
   EXPECT_NE(r.out.find("**PASS**: 0 regressions"), std::string::npos) << r.out;
@@ -64,7 +63,7 @@ TEST(CliCheck, DoctoredRunExitsThreeNamingTechniqueAndMetric) {
   pcf["error"]["edge_mismatch_pct"] = pcf["error"]["edge_mismatch_pct"].get<double>() * 1.5;
   writeFile(tmp / "run" / "metrics.json", records.dump(2));
   const fs::path report = tmp / "reports" / "check.md";
-  const RunResult r = check({"--baseline", (kResults / "bunny-512").string(), "--current", (tmp / "run").string(),
+  const RunResult r = check({"--baseline", (kCommittedResults / "bunny-512").string(), "--current", (tmp / "run").string(),
                           "--out", report.string()},
                          tmp);
   EXPECT_EQ(r.exitCode, 3) << r.err << r.out;
@@ -75,7 +74,7 @@ TEST(CliCheck, DoctoredRunExitsThreeNamingTechniqueAndMetric) {
   EXPECT_FALSE(fs::exists(tmp / "reports" / "check.md.partial"));
 
   // The same change inside a generous tolerance passes.
-  const RunResult loose = check({"--baseline", (kResults / "bunny-512").string(), "--current", (tmp / "run").string(),
+  const RunResult loose = check({"--baseline", (kCommittedResults / "bunny-512").string(), "--current", (tmp / "run").string(),
                               "--error-tolerance", "0.6"},
                              tmp);
   EXPECT_EQ(loose.exitCode, 0) << loose.out;
@@ -83,7 +82,7 @@ TEST(CliCheck, DoctoredRunExitsThreeNamingTechniqueAndMetric) {
 
 TEST(CliCheck, BadInputExitsTwoNamingTheFile) {
   TempDir tmp;
-  const std::string baseline = (kResults / "bunny-512").string();
+  const std::string baseline = (kCommittedResults / "bunny-512").string();
   writeFile(tmp / "broken" / "metrics.json", "[{\"technique\": ");
   json records = bunny512();
   const std::size_t vsm = indexOf(records, "vsm");

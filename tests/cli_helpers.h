@@ -26,6 +26,9 @@ namespace testbed::test {
 namespace fs = std::filesystem;
 
 // Unique across the processes ctest runs in parallel and across the calls of one.
+// The results the repository commits (results/): check and merge tests read them as baselines.
+inline const fs::path kCommittedResults = fs::path(TESTBED_SOURCE_DIR) / "results";
+
 inline std::string uniqueName(const std::string& prefix) {
   static std::atomic<unsigned> counter{0};
   static const unsigned salt = std::random_device{}();

@@ -28,7 +28,6 @@ using namespace testbed::test;
 using nlohmann::json;
 
 const std::string kWall = std::string(TESTBED_SOURCE_DIR) + "/scenes/wall.json";
-const fs::path kResults = fs::path(TESTBED_SOURCE_DIR) / "results";
 
 std::vector<std::string> render(const std::string& out, std::vector<std::string> extra = {}) {
   std::vector<std::string> args = {"render", "--scene", kWall, "--technique", "sm", "--size", "160x90",
@@ -96,7 +95,7 @@ TEST(HostileCli, OutputsNeverReplaceOrFollowWhatIsNotARegularFile) {
 // check --out: a device node (as root: /dev/null's twin), a link or a FIFO stays what it is.
 TEST(HostileCli, CheckOutNeverReplacesANonRegularFile) {
   TempDir tmp;
-  const std::string metrics = (kResults / "bunny-512" / "metrics.json").string();
+  const std::string metrics = (kCommittedResults / "bunny-512" / "metrics.json").string();
   std::vector<fs::path> targets = {tmp / "link", tmp / "fifo"};
   fs::create_symlink(tmp / "victim", tmp / "link");
   writeFile(tmp / "victim", "precious\n");
@@ -153,7 +152,7 @@ TEST(HostileCli, OptionsAreValidated) {
 // check inputs: numbers beyond a double, negative measurements, files that are not files.
 TEST(HostileCli, CheckInputsAreValidated) {
   TempDir tmp;
-  const std::string good = (kResults / "bunny-512" / "metrics.json").string();
+  const std::string good = (kCommittedResults / "bunny-512" / "metrics.json").string();
   const json records = json::parse(readFile(good));
   auto doctored = [&](const std::string& name, const std::function<void(json&)>& change) {
     json copy = records;

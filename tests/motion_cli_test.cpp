@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 using namespace testbed::test;
 
-const std::vector<std::string> kSmall = {"--size", "96x64", "--shadow-map", "128"};
+const std::vector<std::string> kMotionRunSize = {"--size", "96x64", "--shadow-map", "128"};
 
 fs::path bundled(const std::string& name) { return fs::path(TESTBED_SOURCE_DIR) / "scenes" / name; }
 fs::path animated(const std::string& name) { return bundled("motion/" + name); }
@@ -37,7 +37,7 @@ TEST(MotionCli, CompareWritesSequenceOutputsAndGroundTruthReadsZero) {
   const fs::path out = tmp / "out";
   const RunResult run = runTestbed(with({"compare", "--scene", animated("spinning_occluder.json").string(),
                                          "--techniques", "sm", "--frames", "0:4:2", "--out", out.string()},
-                                        kSmall));
+                                        kMotionRunSize));
   ASSERT_EQ(run.exitCode, 0) << run.describe();
   EXPECT_NE(run.err.find("frame 3/3"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("ETA"), std::string::npos) << run.err;
@@ -72,7 +72,7 @@ TEST(MotionCli, NothingMovingReadsZeroFlickerAndCrawl) {
   const fs::path out = tmp / "out";
   const RunResult run = runTestbed(with({"compare", "--scene", file.string(), "--techniques", "sm,pcf,vsm",
                                          "--frames", "all", "--no-plot", "--out", out.string()},
-                                        kSmall));
+                                        kMotionRunSize));
   ASSERT_EQ(run.exitCode, 0) << run.describe();
   for (const auto& sequence : readJson(out / "sequence.json")) expectTemporalZero(sequence);
   EXPECT_FALSE(fs::exists(out / "sm_error_over_time.png"));
@@ -83,7 +83,7 @@ TEST(MotionCli, RenderWritesASequenceWithoutTemporalFigures) {
   const fs::path out = tmp / "out";
   const RunResult run = runTestbed(with({"render", "--scene", animated("fence_dolly.json").string(), "--technique",
                                          "sm", "--frames", "46:47", "--out", out.string()},
-                                        kSmall));
+                                        kMotionRunSize));
   ASSERT_EQ(run.exitCode, 0) << run.describe();
   const json sm = readJson(out / "sm_sequence.json");
   EXPECT_EQ(sm.at("frames").at("first").get<int>(), 46);
@@ -111,7 +111,7 @@ TEST(MotionCli, BadFramesAndBadAnimationBlocksAreRefused) {
   };
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const fs::path out = tmp / ("out" + std::to_string(i));
-    const RunResult run = runTestbed(with(with(cases[i].args, {"--out", out.string()}), kSmall));
+    const RunResult run = runTestbed(with(with(cases[i].args, {"--out", out.string()}), kMotionRunSize));
     EXPECT_TRUE(rejectedWithOneLine(run)) << i;
     EXPECT_NE(run.err.find(cases[i].names), std::string::npos) << run.err;
     EXPECT_FALSE(fs::exists(out)) << "nothing written";

@@ -28,7 +28,7 @@ using nlohmann::json;
 using namespace testbed::test;
 
 const std::string kScene = std::string(TESTBED_SOURCE_DIR) + "/scenes/wall.json";
-const std::vector<std::string> kSmall = {"--size", "160x90", "--shadow-map", "256"};
+const std::vector<std::string> kPluginRunSize = {"--size", "160x90", "--shadow-map", "256"};
 
 // ---------------------------------------------------------------------------------------
 // A working plugin
@@ -56,12 +56,12 @@ TEST(Plugin, ListShowsThePluginsTechniqueBesideTheInTreeOnes) {
 TEST(Plugin, RenderGivesSmsVisibility) {
   TempDir tmp;
   const RunResult sm =
-      runTestbed(with({"render", "--scene", kScene, "--technique", "sm", "--out", (tmp / "sm").string()}, kSmall));
+      runTestbed(with({"render", "--scene", kScene, "--technique", "sm", "--out", (tmp / "sm").string()}, kPluginRunSize));
   ASSERT_EQ(sm.exitCode, 0) << sm.describe();
   const RunResult example =
       runTestbed(with({"render", "--plugin", TESTBED_PLUGIN_EXAMPLE, "--scene", kScene, "--technique", "example-sm",
                        "--set", "bias=0", "--out", (tmp / "example").string()},
-                      kSmall));
+                      kPluginRunSize));
   ASSERT_EQ(example.exitCode, 0) << example.describe();
   const json record = json::parse(readFile(tmp / "example" / "example-sm.json"));
   EXPECT_EQ(record["technique"], "example-sm");
@@ -84,7 +84,7 @@ TEST(Plugin, CompareRanksItBesideSm) {
   TempDir tmp;
   const RunResult run = runTestbed(with({"compare", "--plugin", TESTBED_PLUGIN_EXAMPLE, "--scene", kScene,
                                          "--techniques", "sm,example-sm", "--out", tmp.path().string()},
-                                        kSmall));
+                                        kPluginRunSize));
   ASSERT_EQ(run.exitCode, 0) << run.describe();
   const json all = json::parse(readFile(tmp / "metrics.json"));
   const json* sm = nullptr;
@@ -165,7 +165,7 @@ TEST(PcssPlugin, WithoutPluginTheUnknownIdSuggestsTheClosestAndPlugin) {
   TempDir tmp;
   const RunResult run = runTestbed(with({"render", "--scene", kScene, "--technique", "pcss", "--out",
                                          (tmp / "out").string()},
-                                        kSmall));
+                                        kPluginRunSize));
   EXPECT_EQ(run.exitCode, 2) << run.describe();
   EXPECT_NE(run.err.find("unknown technique 'pcss' (closest: pcf, "), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("--plugin PATH"), std::string::npos) << run.err;
@@ -211,7 +211,7 @@ void expectRejected(const std::string& plugin, const std::string& expected,
   TempDir tmp;
   const fs::path out = tmp / "out";
   std::vector<std::string> args = with(command, {"--plugin", plugin});
-  if (command[0] != "list") args = with(args, with({"--scene", kScene, "--out", out.string()}, kSmall));
+  if (command[0] != "list") args = with(args, with({"--scene", kScene, "--out", out.string()}, kPluginRunSize));
   const RunResult run = runTestbed(args);
   EXPECT_EQ(run.exitCode, 2) << run.describe();
   EXPECT_TRUE(run.out.empty()) << run.out;

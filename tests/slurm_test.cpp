@@ -70,13 +70,6 @@ std::size_t finishedCells(const fs::path& shard) {
   return n;
 }
 
-// The records' cells and error blocks (times differ run to run, errors do not).
-std::map<std::string, nlohmann::json> errorsOf(const nlohmann::json& records) {
-  std::map<std::string, nlohmann::json> out;
-  for (const auto& r : records) out[r["cell"].dump() + " " + r["technique"].get<std::string>()] = r["error"];
-  return out;
-}
-
 // A study over a generated corpus as a 2-task job array with its dependent merge; shard 1
 // is cancelled (scancel: SIGTERM) once it has finished a cell, which cancels the merge;
 // submitted again, both shards skip the cells they finished and the merge holds the

@@ -2,6 +2,7 @@
 // What the sweep, merge and Slurm tests share beyond tests/cli_helpers.h: the tiny spec
 // and the cells of a set of records.
 #include <filesystem>
+#include <map>
 #include <set>
 #include <string>
 
@@ -21,6 +22,14 @@ inline std::set<std::string> cellsOf(const nlohmann::json& records) {
     cells.insert(r["cell"].dump() + " " + r["technique"].get<std::string>() + " " + r["scene"].get<std::string>() + " " +
                  r["size"].dump() + " " + r["shadow_map"].dump() + " " + r["params"].dump());
   return cells;
+}
+
+// The records' cells and error blocks: what a resumed or merged run and an uninterrupted one
+// must agree on (times differ run to run, errors do not).
+inline std::map<std::string, nlohmann::json> errorsOf(const nlohmann::json& records) {
+  std::map<std::string, nlohmann::json> out;
+  for (const auto& r : records) out[r["cell"].dump() + " " + r["technique"].get<std::string>()] = r["error"];
+  return out;
 }
 
 }  // namespace testbed::test

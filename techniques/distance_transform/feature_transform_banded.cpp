@@ -8,11 +8,11 @@ namespace testbed {
 namespace {
 
 // feature_transform_band.glsl's units.
-constexpr GLuint kNearestUnit = 0, kBandSeedsUnit = 1, kBandCarryUnit = 2, kRowNearestUnit = 3, kLinksUnit = 4,
+constexpr GLuint kNearestUnit = 0, kBandSeedsUnit = 1, kBandCarryUnit = 2, kBandedRowNearestUnit = 3, kLinksUnit = 4,
                  kBandEndsUnit = 5, kBandStartUnit = 6;
 constexpr int kGroupSide = 8;  // local_size_x and _y
 
-GLuint groupsFor(int invocations) { return GLuint((invocations + kGroupSide - 1) / kGroupSide); }
+GLuint groupsOfSide(int invocations) { return GLuint((invocations + kGroupSide - 1) / kGroupSide); }
 int bandsOf(int pixels, int band) { return (pixels + band - 1) / band; }
 
 Program stepProgram(const char* key, int step) {
@@ -49,7 +49,7 @@ void BandedFeatureTransformPass::run(const Texture& seeds, glm::ivec2 size, cons
   bindImage(kNearestUnit, nearest_, GL_RG32I);
   bindImage(kBandSeedsUnit, bandSeedsImage_, GL_RG32I);
   bindImage(kBandCarryUnit, bandCarry_, GL_RG32I);
-  bindImage(kRowNearestUnit, rowNearest_, GL_R32I);
+  bindImage(kBandedRowNearestUnit, rowNearest_, GL_R32I);
   bindImage(kLinksUnit, links_, GL_RG32I);
   bindImage(kBandEndsUnit, bandEnds_, GL_RG32I);
   bindImage(kBandStartUnit, bandStart_, GL_R32I);
@@ -91,7 +91,7 @@ void BandedFeatureTransformPass::dispatch(const Program& program, int x, int y) 
   program.use();
   program.set("uSize", size_);
   program.set("uBand", band_);
-  glDispatchCompute(groupsFor(x), groupsFor(y), 1);
+  glDispatchCompute(groupsOfSide(x), groupsOfSide(y), 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 

@@ -15,6 +15,7 @@
 #include "testbed/app/plugins.h"
 #include "testbed/app/sweep_report.h"
 #include "testbed/core/error.h"
+#include "testbed/core/messages.h"
 #include "testbed/gl/context.h"
 #include "testbed/harness/metric_table.h"
 #include "testbed/harness/record.h"
@@ -31,12 +32,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-std::string minutesSeconds(double seconds) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%d:%02d", int(seconds) / 60, int(seconds) % 60);
-  return text;
-}
 
 const RegisteredTechnique& techniqueOf(const SweepCell& cell) {
   return cell.technique == kGroundTruthId ? shadowVolumeGroundTruth() : findTechnique(cell.technique);

@@ -77,12 +77,6 @@ std::vector<int> parseMapSizes(const std::string& text) {
   return sizes;
 }
 
-std::string minutesSeconds(double seconds) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%d:%02d", int(seconds) / 60, int(seconds) % 60);
-  return text;
-}
-
 // One configuration's figures: the technique's metric and, with a baseline, the baseline's.
 struct Evaluation {
   double technique = 0;

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "testbed/app/python_script.h"
+#include "testbed/app/work_folder.h"
 #include "testbed/core/error.h"
 #include "testbed/core/messages.h"
 #include "testbed/gl/context.h"
@@ -17,37 +18,10 @@
 #include "testbed/metrics/metrics.h"
 #include "testbed/report/report_html.h"
 
-
 namespace testbed {
 namespace {
 
 namespace fs = std::filesystem;
-
-// A private folder for what ffmpeg and matplotlib write before the files are staged.
-class WorkFolder {
- public:
-  WorkFolder() {
-    std::string pattern = (fs::temp_directory_path() / "testbed-motion-XXXXXX").string();
-    if (!mkdtemp(pattern.data())) throw std::runtime_error("cannot create a temporary folder in " + pattern);
-    path_ = pattern;
-  }
-  ~WorkFolder() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
-std::string readBytes(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if (!in && !in.eof()) throw std::runtime_error("cannot read " + file.string());
-  return bytes.str();
-}
 
 // scripts/motion_plot.py SERIES OUTDIR.
 void plotSeries(const fs::path& series, const fs::path& folder) {
@@ -69,7 +43,7 @@ std::vector<std::string> sequenceOutputNames(const SequenceJob& job) {
 
 std::vector<nlohmann::json> runSequence(const SequenceJob& job, Scene& scene, FrameRunner& runner,
                                         const std::string& backend, OutputFiles& files) {
-  const WorkFolder work;
+  const WorkFolder work("testbed-motion");
   const int fps = scene.animation ? scene.animation->fps : 30;
   const glm::ivec2 size = runner.settings().size;
   std::vector<std::unique_ptr<VideoWriter>> videos;
@@ -87,7 +61,7 @@ std::vector<nlohmann::json> runSequence(const SequenceJob& job, Scene& scene, Fr
   for (std::size_t e = 0; e < outcomes.size(); ++e) {
     const std::string& id = job.entries[e].technique->info->id;
     videos[e]->finish();
-    files.writeText(id + ".mp4", readBytes(videos[e]->path()));
+    files.writeText(id + ".mp4", WorkFolder::read(videos[e]->path()));
     const std::string frames = outcomes[e].frames.dump(2) + "\n";
     files.writeText(id + "_frames.json", frames);
     records.push_back(outcomes[e].record);
@@ -96,7 +70,7 @@ std::vector<nlohmann::json> runSequence(const SequenceJob& job, Scene& scene, Fr
       const fs::path series = work.path() / (id + "_frames.json");
       std::ofstream(series) << frames;
       plotSeries(series, work.path());
-      files.writeText(id + "_error_over_time.png", readBytes(work.path() / (id + "_error_over_time.png")));
+      files.writeText(id + "_error_over_time.png", WorkFolder::read(work.path() / (id + "_error_over_time.png")));
     }
   }
   files.writeText("sequence.json", nlohmann::json(records).dump(2) + "\n");

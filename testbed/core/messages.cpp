@@ -45,4 +45,11 @@ void breakProgressLine() {
   lineOpen = false;
 }
 
+std::string minutesSeconds(double seconds) {
+  const long s = seconds > 0 ? long(seconds + 0.5) : 0;
+  char text[32];
+  std::snprintf(text, sizeof text, "%ld:%02ld", s / 60, s % 60);
+  return text;
+}
+
 }  // namespace testbed

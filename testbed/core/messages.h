@@ -18,4 +18,7 @@ void endProgressLine(std::string_view result);
 // Ends a line begun and not yet ended (before an error message); otherwise nothing.
 void breakProgressLine();
 
+// A duration as progress lines give elapsed time and ETA: "M:SS" (minutes unbounded).
+std::string minutesSeconds(double seconds);
+
 }  // namespace testbed

@@ -32,15 +32,15 @@ std::string pixelText(const ImageF& image, std::size_t i) {
          ") = " + valueText(image.pixels[i]);
 }
 
-ConformanceCheck pass(std::string name, std::string detail) { return {std::move(name), true, std::move(detail)}; }
-ConformanceCheck fail(std::string name, std::string detail) { return {std::move(name), false, std::move(detail)}; }
+ConformanceCheck passedCheck(std::string name, std::string detail) { return {std::move(name), true, std::move(detail)}; }
+ConformanceCheck failedCheck(std::string name, std::string detail) { return {std::move(name), false, std::move(detail)}; }
 
 // Runs `body`; a technique that throws fails the check with what it threw.
 ConformanceCheck guarded(const std::string& name, const std::function<ConformanceCheck()>& body) {
   try {
     return body();
   } catch (const std::exception& error) {
-    return fail(name, std::string("the technique threw: ") + error.what());
+    return failedCheck(name, std::string("the technique threw: ") + error.what());
   }
 }
 
@@ -251,15 +251,15 @@ ConformanceCheck checkParameterExtremes(const RegisteredTechnique& technique) {
       try {
         run = parameter.empty() ? runWith(runner, technique, {}) : runWith(runner, technique, {{parameter, value}});
       } catch (const std::exception& error) {
-        return fail(name, what + ": the technique threw: " + error.what());
+        return failedCheck(name, what + ": the technique threw: " + error.what());
       }
       ++runs;
       std::string example;
       if (const int bad = badReceivers(run.visibility, runner.positions(), example); bad > 0)
-        return fail(name, what + ": " + std::to_string(bad) + " receivers not finite or outside [0, 1], first " + example);
+        return failedCheck(name, what + ": " + std::to_string(bad) + " receivers not finite or outside [0, 1], first " + example);
     }
   }
-  return pass(name, std::to_string(runs) + " runs (defaults and every parameter at each limit, spot and directional)"
+  return passedCheck(name, std::to_string(runs) + " runs (defaults and every parameter at each limit, spot and directional)"
                     ": every receiver finite in [0, 1]");
 }
 
@@ -279,11 +279,11 @@ ConformanceCheck checkFacing(const RegisteredTechnique& technique, const Paramet
         if (!isReceiver(runner.positions(), i)) continue;
         ++receivers;
         if (run.visibility.pixels[i] != 0.0f)
-          return fail(name, std::string(label) + ": a receiver facing away from the light is not 0, " +
+          return failedCheck(name, std::string(label) + ": a receiver facing away from the light is not 0, " +
                                 pixelText(run.visibility, i));
       }
     }
-    return pass(name, std::to_string(receivers) + " receivers facing away from the light (directional and spot) read 0");
+    return passedCheck(name, std::to_string(receivers) + " receivers facing away from the light (directional and spot) read 0");
   });
 }
 
@@ -307,17 +307,17 @@ ConformanceCheck checkLightFrustum(const RegisteredTechnique& technique, const P
           ++inside;
           darkInside += !lit;
         } else if (lit) {
-          return fail(name, c.name + ": a receiver beyond the frustum's " + frustumSideName(side) +
+          return failedCheck(name, c.name + ": a receiver beyond the frustum's " + frustumSideName(side) +
                                 " side reads lit, " + pixelText(run.visibility, i));
         }
       }
       // A filtered technique's own artefacts (msm's self-shadowing where the floor grazes
       // a spot's rays) may darken a few receivers inside; that is not the convention.
       if (darkInside > (filtered ? inside / 200 : 0))
-        return fail(name, c.name + ": " + std::to_string(darkInside) + " of " + std::to_string(inside) +
+        return failedCheck(name, c.name + ": " + std::to_string(darkInside) + " of " + std::to_string(inside) +
                               " bare receivers inside the frustum read shadow");
     }
-    return pass(name, std::to_string(judged) + " receivers on 5 floors cut by the light's frustum: shadow beyond each " +
+    return passedCheck(name, std::to_string(judged) + " receivers on 5 floors cut by the light's frustum: shadow beyond each " +
                           "side and behind a spot, lit inside");
   });
 }
@@ -333,9 +333,9 @@ ConformanceCheck checkDeterminism(const RegisteredTechnique& technique, const Pa
     for (std::size_t i = 0; i < first.pixels.size(); ++i)
       if (!sameBits(first.pixels[i], second.pixels[i]) && differing++ == 0) example = i;
     if (differing > 0)
-      return fail(name, std::to_string(differing) + " pixels differ between two runs, first " +
+      return failedCheck(name, std::to_string(differing) + " pixels differ between two runs, first " +
                             pixelText(first, example) + " then " + valueText(second.pixels[example]));
-    return pass(name, "two runs, each a fresh instance, give bit-identical visibility");
+    return passedCheck(name, "two runs, each a fresh instance, give bit-identical visibility");
   });
 }
 
@@ -365,14 +365,14 @@ ConformanceCheck checkMemoryLedger(const RegisteredTechnique& technique, const P
     for (const auto& resource : record.value("memory", nlohmann::json::array())) split += resource["bytes"].get<std::uint64_t>();
     const auto booked = record["memory_bytes"].get<std::uint64_t>();
     if (split != booked)
-      return fail(name, "the record's memory block sums to " + std::to_string(split) + " bytes, memory_bytes is " +
+      return failedCheck(name, "the record's memory block sums to " + std::to_string(split) + " bytes, memory_bytes is " +
                             std::to_string(booked));
     if (live != booked)
-      return fail(name, "the technique's GL objects hold " + std::to_string(live) + " bytes, its ledger books " +
+      return failedCheck(name, "the technique's GL objects hold " + std::to_string(live) + " bytes, its ledger books " +
                             std::to_string(booked));
     if (leaked != 0)
-      return fail(name, std::to_string(leaked) + " bytes of GL objects outlive the technique's instance");
-    return pass(name, "memory_bytes " + std::to_string(booked) + " = the memory block's sum = the bytes its GL " +
+      return failedCheck(name, std::to_string(leaked) + " bytes of GL objects outlive the technique's instance");
+    return passedCheck(name, "memory_bytes " + std::to_string(booked) + " = the memory block's sum = the bytes its GL " +
                           "objects hold, all released with the instance");
   });
 }
@@ -390,11 +390,11 @@ ConformanceCheck checkBadValuesRefused(const RegisteredTechnique& technique) {
     }
     return false;
   };
-  if (!refuses("no-such-parameter", "1")) return fail(name, "--set no-such-parameter=1 was accepted");
+  if (!refuses("no-such-parameter", "1")) return failedCheck(name, "--set no-such-parameter=1 was accepted");
   for (const auto& spec : technique.info->parameters)
     for (const auto& value : invalidValues(spec))
-      if (!refuses(spec.name, value)) return fail(name, "--set " + spec.name + "=" + value + " was accepted");
-  return pass(name, std::to_string(refused) + " bad --set values refused (unknown name, out of range, not a number, " +
+      if (!refuses(spec.name, value)) return failedCheck(name, "--set " + spec.name + "=" + value + " was accepted");
+  return passedCheck(name, std::to_string(refused) + " bad --set values refused (unknown name, out of range, not a number, " +
                         "NaN, even for odd-only, not a choice)");
 }
 

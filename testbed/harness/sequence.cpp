@@ -19,13 +19,6 @@ bool parseInt(std::string_view text, int& value) {
   return !text.empty() && ec == std::errc() && end == text.data() + text.size();
 }
 
-std::string duration(double seconds) {
-  const long s = long(seconds + 0.5);
-  char text[32];
-  std::snprintf(text, sizeof text, "%ldm%02lds", s / 60, s % 60);
-  return text;
-}
-
 }  // namespace
 
 FrameRange parseFrameRange(const std::string& text, const Scene& scene) {
@@ -149,8 +142,8 @@ std::vector<SequenceOutcome> runFrames(const std::vector<SequenceEntry>& entries
     }
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     log << "testbed: frame " << k + 1 << "/" << count << " (frame " << frame << " of " << oneLine(scene.name) << ", "
-        << tracks.size() << (tracks.size() == 1 ? " run" : " runs") << "), elapsed " << duration(elapsed) << ", ETA "
-        << duration(elapsed / (k + 1) * (count - k - 1)) << "\n";
+        << tracks.size() << (tracks.size() == 1 ? " run" : " runs") << "), elapsed " << minutesSeconds(elapsed) << ", ETA "
+        << minutesSeconds(elapsed / (k + 1) * (count - k - 1)) << "\n";
   }
   const int fps = scene.animation ? scene.animation->fps : 30;
   std::vector<SequenceOutcome> outcomes;

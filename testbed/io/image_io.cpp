@@ -9,16 +9,11 @@
 #include <OpenImageIO/imageio.h>
 
 #include "testbed/core/error.h"
+#include "testbed/io/file_extension.h"
 #include "testbed/io/input_file.h"
 
 namespace testbed {
 namespace {
-
-std::string lowerExtension(const std::filesystem::path& file) {
-  std::string ext = file.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
 
 // Encodes `image` in the format of `formatName` ("png", "openexr") into memory; `file`
 // names it in messages.

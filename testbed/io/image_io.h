@@ -9,6 +9,9 @@
 
 namespace testbed {
 
+// The font figure labels are drawn in (Debian's fonts-dejavu-core, which setup.sh installs).
+inline constexpr const char* kLabelFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
 struct ImageF {
   int width = 0, height = 0, channels = 0;
   std::vector<float> pixels;  // top-down, interleaved

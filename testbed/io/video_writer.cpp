@@ -1,4 +1,5 @@
 #include "testbed/io/video_writer.h"
+#include "testbed/io/file_extension.h"
 
 #include <cerrno>
 #include <csignal>
@@ -62,12 +63,6 @@ int writeAll(int fd, const unsigned char* data, std::size_t size) {
     size -= std::size_t(n);
   }
   return 0;
-}
-
-std::string lowerExtension(const std::filesystem::path& file) {
-  std::string ext = file.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
 }
 
 }  // namespace

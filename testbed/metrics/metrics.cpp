@@ -9,13 +9,14 @@
 
 
 #include "testbed/metrics/distance_transform.h"
+#include "testbed/metrics/pixel_rules.h"
 
 namespace testbed {
 namespace {
 
-std::string sizeText(const ImageF& image) {
-  return std::to_string(image.width) + "x" + std::to_string(image.height);
-}
+using pixel_rules::isLit;
+using pixel_rules::percent;
+using pixel_rules::sizeText;
 
 void checkShape(const ImageF& image, const char* name) {
   if (image.channels != 1)
@@ -49,7 +50,6 @@ void checkAll(const ImageF& visibility, const ImageF& groundTruth) {
   checkInputs(groundTruth, visibility, "visibility");
 }
 
-bool isLit(float value) { return value >= 0.5f; }
 
 // Receivers with a 4-neighbour receiver of the other binary state.
 std::vector<std::uint8_t> boundaryMask(const ImageF& image, const std::vector<std::uint8_t>& receiver) {
@@ -90,7 +90,6 @@ struct SoftSums {
   static double mean(double sum, std::size_t count) { return count == 0 ? 0.0 : sum / double(count); }
 };
 
-double percent(std::size_t part, std::size_t whole) { return whole == 0 ? 0.0 : 100.0 * double(part) / double(whole); }
 
 }  // namespace
 

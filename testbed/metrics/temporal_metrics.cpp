@@ -6,13 +6,14 @@
 #include <string>
 
 #include "testbed/metrics/metrics.h"
+#include "testbed/metrics/pixel_rules.h"
 
 namespace testbed {
 namespace {
 
-std::string sizeText(const ImageF& image) {
-  return std::to_string(image.width) + "x" + std::to_string(image.height);
-}
+using pixel_rules::isLit;
+using pixel_rules::percent;
+using pixel_rules::sizeText;
 
 std::string pixelText(std::size_t i, int width) {
   return "(" + std::to_string(i % std::size_t(width)) + ", " + std::to_string(i / std::size_t(width)) + ")";
@@ -87,8 +88,6 @@ std::optional<Reprojection> reproject(const glm::dvec3& world, const glm::dmat4&
   return Reprojection{std::size_t(py) * std::size_t(width) + std::size_t(px), std::max(fx, fy)};
 }
 
-bool isLit(float value) { return value >= 0.5f; }
-double percent(std::size_t part, std::size_t whole) { return whole == 0 ? 0.0 : 100.0 * double(part) / double(whole); }
 
 }  // namespace
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "testbed/harness/metric_table.h"
+#include "testbed/io/image_io.h"
 #include "testbed/report/comparison.h"
 
 namespace testbed {
@@ -18,7 +19,6 @@ constexpr int kWindow = 48;       // close-up window in screen pixels
 constexpr int kZoom = 5;          // nearest-neighbour magnification of the close-up
 constexpr int kLabelHeight = 26;
 constexpr int kGap = 6;
-const char* const kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
 OIIO::ImageBuf toBuffer(const ImageF& image) {
   OIIO::ImageBuf buffer(OIIO::ImageSpec(image.width, image.height, image.channels, OIIO::TypeDesc::FLOAT));
@@ -111,7 +111,7 @@ ImageF comparisonGrid(const Comparison& c) {
   for (std::size_t row = 0; row < c.entries.size(); ++row) {
     const ComparisonEntry& entry = c.entries[row];
     const int top = int(row) * rowHeight + kGap;
-    OIIO::ImageBufAlgo::render_text(canvas, kGap, top + 18, label(c, entry), 16, kFont, white);
+    OIIO::ImageBufAlgo::render_text(canvas, kGap, top + 18, label(c, entry), 16, kLabelFont, white);
     const int imagesTop = top + kLabelHeight;
     const auto [wx, wy] = worstWindow(entry.visibility, gt, kWindow, c.softReference);
     paste(canvas, scaled(entry.shaded, tileWidth, tileHeight), kGap, imagesTop);
@@ -129,7 +129,7 @@ ImageF comparisonGrid(const Comparison& c) {
                                   "columns: shaded image | error heat map against the " + reference +
                                       " (yellow box: worst window) | close-up of the worst window: technique, " +
                                       reference,
-                                  14, kFont, white);
+                                  14, kLabelFont, white);
   ImageF out{width, height, 3, std::vector<float>(std::size_t(width) * height * 3)};
   canvas.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, out.pixels.data());
   return out;

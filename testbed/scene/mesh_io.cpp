@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "testbed/core/error.h"
+#include "testbed/io/file_extension.h"
 #include "testbed/io/input_file.h"
 #include "testbed/scene/scene.h"
 
@@ -42,13 +43,6 @@ std::string quote(const std::string& text) {
     if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
   }
   return "\"" + out + "\"";
-}
-
-std::string lowerExtension(const fs::path& file) {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
 }
 
 // Plain decimal digits only: OpenMesh's own `>> unsigned` would wrap "-1" and, on overflow,

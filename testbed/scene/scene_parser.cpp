@@ -34,7 +34,7 @@ using Names = std::vector<std::string>;
 
 // Guards against absurd subdivide/segments values before any memory is spent on them.
 constexpr std::uint64_t kMaxSceneTriangles = 20'000'000;
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 // An animation's frames are rendered one by one; this bounds a typo, not a real sequence.
 constexpr int kMaxFrames = 100'000;
 
@@ -202,8 +202,8 @@ class Parser {
   }
 
   void nearFar(const json& object, const Key& key, float& nearPlane, float& farPlane) const {
-    nearPlane = optional(object, key, "near", 1.0, 0.0, kInf);
-    farPlane = optional(object, key, "far", 1000.0, 0.0, kInf);
+    nearPlane = optional(object, key, "near", 1.0, 0.0, kUnbounded);
+    farPlane = optional(object, key, "far", 1000.0, 0.0, kUnbounded);
     if (!(farPlane > nearPlane)) {
       fail(key / "far",
            "must be greater than near (" + show(nearPlane) + "), got " + show(farPlane));
@@ -319,7 +319,7 @@ class Parser {
     } else {
       fail(key / "type", "expected \"spot\" or \"directional\", got " + show(type));
     }
-    light.radius = optional(value, key, "radius", 0.0, 0.0, kInf, false);
+    light.radius = optional(value, key, "radius", 0.0, 0.0, kUnbounded, false);
     checkLightTransforms(light, key);
     return light;
   }

@@ -7,11 +7,11 @@ namespace testbed {
 namespace {
 
 namespace fs = std::filesystem;
-using json = nlohmann::ordered_json;
+using SceneJson = nlohmann::ordered_json;
 
 // A float written as its double: read back as a float it is the same float, so a
 // written scene renders exactly what the in-memory one did.
-json toJson(glm::vec3 v) { return json::array({double(v.x), double(v.y), double(v.z)}); }
+SceneJson toJson(glm::vec3 v) { return SceneJson::array({double(v.x), double(v.y), double(v.z)}); }
 
 // A mesh entry is an asset name when it has no folder and no extension (as the parser
 // resolves it); anything else is a path.
@@ -28,20 +28,20 @@ fs::path folderOf(const fs::path& file) {
 
 }  // namespace
 
-json sceneWithView(json document, const fs::path& source, const fs::path& destination, const CameraDesc& camera,
+SceneJson sceneWithView(SceneJson document, const fs::path& source, const fs::path& destination, const CameraDesc& camera,
                    const LightDesc& light) {
-  json& c = document["camera"];
+  SceneJson& c = document["camera"];
   c["eye"] = toJson(camera.eye);
   c["target"] = toJson(camera.target);
   c["up"] = toJson(camera.up);
-  json& l = document["light"];
+  SceneJson& l = document["light"];
   if (light.type == LightType::Spot) {
     l["eye"] = toJson(light.eye);
   } else {
     l["direction"] = toJson(light.direction);
   }
   l["target"] = toJson(light.target);
-  for (json& object : document["objects"]) {
+  for (SceneJson& object : document["objects"]) {
     const auto mesh = object.find("mesh");
     if (mesh == object.end() || !mesh->is_string() || !isRelativePath(mesh->get<std::string>())) continue;
     const fs::path absolute = (folderOf(source) / mesh->get<std::string>()).lexically_normal();
@@ -53,10 +53,10 @@ json sceneWithView(json document, const fs::path& source, const fs::path& destin
   return document;
 }
 
-json readSceneDocument(const Scene& scene) {
+SceneJson readSceneDocument(const Scene& scene) {
   const std::string text = readInputFile(scene.file, kMaxJsonInputBytes);
   parseJsonInput(text, scene.file);  // the strict reader's checks and messages
-  return json::parse(text);
+  return SceneJson::parse(text);
 }
 
 }  // namespace testbed

@@ -6,13 +6,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "testbed/io/image_io.h"
+
 namespace testbed {
 namespace {
 
 constexpr int kTile = 256;  // close-up tile side in figure pixels
 constexpr int kLabel = 22;
-constexpr int kGap = 6;
-const char* const kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+constexpr int kTileGap = 6;
 
 // The window of `image` magnified to kTile² without interpolation, so texels stay visible.
 OIIO::ImageBuf magnified(const ImageF& image, int x0, int y0, int side) {
@@ -75,7 +76,7 @@ CloseUpFigure closeUpFigure(const CloseUpTile& truth, const std::vector<CloseUpT
   // Overview (the ground truth's frame with the window boxed), then one tile per image.
   const int overviewWidth = std::max(1, frame.width * kTile / frame.height);
   const int count = int(techniques.size()) + 1;
-  const int width = kGap + overviewWidth + count * (kTile + kGap) + kGap, height = kGap + kLabel + kTile + kGap;
+  const int width = kTileGap + overviewWidth + count * (kTile + kTileGap) + kTileGap, height = kTileGap + kLabel + kTile + kTileGap;
   OIIO::ImageBuf canvas(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::FLOAT));
   const float background[3] = {0.12f, 0.12f, 0.14f}, white[3] = {1, 1, 1}, yellow[3] = {1, 0.85f, 0};
   OIIO::ImageBufAlgo::fill(canvas, background);
@@ -86,17 +87,17 @@ CloseUpFigure closeUpFigure(const CloseUpTile& truth, const std::vector<CloseUpT
   const float s = float(kTile) / float(frame.height);
   OIIO::ImageBufAlgo::render_box(overview, int(win[0] * s), int(win[1] * s), int((win[0] + win[2]) * s),
                                  int((win[1] + win[2]) * s), yellow);
-  const int top = kGap + kLabel;
-  OIIO::ImageBufAlgo::paste(canvas, kGap, top, 0, 0, overview);
-  OIIO::ImageBufAlgo::render_text(canvas, kGap, top - 6,
+  const int top = kTileGap + kLabel;
+  OIIO::ImageBufAlgo::paste(canvas, kTileGap, top, 0, 0, overview);
+  OIIO::ImageBufAlgo::render_text(canvas, kTileGap, top - 6,
                                   "window " + std::to_string(win[2]) + "x" + std::to_string(win[2]) + " px at (" + std::to_string(win[0]) + ", " +
                                       std::to_string(win[1]) + ")",
-                                  14, kFont, white);
-  int x = 2 * kGap + overviewWidth;
+                                  14, kLabelFont, white);
+  int x = 2 * kTileGap + overviewWidth;
   auto tile = [&](const CloseUpTile& t) {
     OIIO::ImageBufAlgo::paste(canvas, x, top, 0, 0, magnified(*t.shaded, win[0], win[1], win[2]));
-    OIIO::ImageBufAlgo::render_text(canvas, x, top - 6, t.label.substr(0, 36), 13, kFont, white);
-    x += kTile + kGap;
+    OIIO::ImageBufAlgo::render_text(canvas, x, top - 6, t.label.substr(0, 36), 13, kLabelFont, white);
+    x += kTile + kTileGap;
   };
   tile(truth);
   for (const auto& t : techniques) tile(t);

@@ -16,7 +16,7 @@ const std::vector<ParameterSpec> kSpecs = {
     ParameterSpec::choice("visibility", "conservative", {"conservative", "improved"}, "visibility"),
 };
 
-std::string errorOf(const std::map<std::string, std::string>& raw) {
+std::string parameterError(const std::map<std::string, std::string>& raw) {
   try {
     resolveParameters("demo", kSpecs, raw);
   } catch (const InputError& error) {
@@ -45,18 +45,18 @@ TEST(Parameters, ParsesEachType) {
 }
 
 TEST(Parameters, RejectsBadValuesNamingTheAssignment) {
-  EXPECT_NE(errorOf({{"nope", "1"}}).find("--set nope=1: technique 'demo' has no parameter 'nope'"),
+  EXPECT_NE(parameterError({{"nope", "1"}}).find("--set nope=1: technique 'demo' has no parameter 'nope'"),
             std::string::npos);
-  EXPECT_NE(errorOf({{"nope", "1"}}).find("bias, kernel, bilinear, visibility"), std::string::npos);
-  EXPECT_NE(errorOf({{"bias", "abc"}}).find("--set bias=abc: expected a number"), std::string::npos);
-  EXPECT_NE(errorOf({{"bias", "nan"}}).find("not a finite number"), std::string::npos);
-  EXPECT_NE(errorOf({{"bias", "inf"}}).find("not a finite number"), std::string::npos);
-  EXPECT_NE(errorOf({{"bias", "2"}}).find("out of range"), std::string::npos);
-  EXPECT_NE(errorOf({{"kernel", "2.5"}}).find("expected an integer"), std::string::npos);
-  EXPECT_NE(errorOf({{"kernel", "18"}}).find("out of range [1, 17]"), std::string::npos);
-  EXPECT_NE(errorOf({{"kernel", ""}}).find("expected an integer"), std::string::npos);
-  EXPECT_NE(errorOf({{"bilinear", "yes please"}}).find("expected true or false"), std::string::npos);
-  EXPECT_NE(errorOf({{"visibility", "best"}}).find("expected one of: conservative, improved"), std::string::npos);
+  EXPECT_NE(parameterError({{"nope", "1"}}).find("bias, kernel, bilinear, visibility"), std::string::npos);
+  EXPECT_NE(parameterError({{"bias", "abc"}}).find("--set bias=abc: expected a number"), std::string::npos);
+  EXPECT_NE(parameterError({{"bias", "nan"}}).find("not a finite number"), std::string::npos);
+  EXPECT_NE(parameterError({{"bias", "inf"}}).find("not a finite number"), std::string::npos);
+  EXPECT_NE(parameterError({{"bias", "2"}}).find("out of range"), std::string::npos);
+  EXPECT_NE(parameterError({{"kernel", "2.5"}}).find("expected an integer"), std::string::npos);
+  EXPECT_NE(parameterError({{"kernel", "18"}}).find("out of range [1, 17]"), std::string::npos);
+  EXPECT_NE(parameterError({{"kernel", ""}}).find("expected an integer"), std::string::npos);
+  EXPECT_NE(parameterError({{"bilinear", "yes please"}}).find("expected true or false"), std::string::npos);
+  EXPECT_NE(parameterError({{"visibility", "best"}}).find("expected one of: conservative, improved"), std::string::npos);
 }
 
 TEST(Parameters, OddOnlyIntegers) {
