@@ -17,6 +17,7 @@
 #include "testbed/core/error.h"
 #include "testbed/gl/context.h"
 #include "testbed/harness/frame_runner.h"
+#include "testbed_build_paths.h"
 
 namespace {
 

@@ -50,6 +50,7 @@
 #include "testbed/gl/context.h"
 #include "testbed/harness/sequence.h"
 #include "testbed/scene/animation.h"
+#include "testbed_build_paths.h"
 
 namespace {
 

@@ -30,6 +30,7 @@
 #include "testbed/harness/metric_table.h"
 #include "testbed/harness/record.h"
 #include "testbed/harness/timing.h"
+#include "testbed_build_paths.h"
 
 namespace {
 

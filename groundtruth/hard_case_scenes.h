@@ -4,6 +4,7 @@
 #include <string>
 
 #include "tests/test_scenes.h"
+#include "testbed_test_paths.h"
 
 namespace testbed::test {
 

@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include "testbed/core/error.h"
+#include "testbed_test_paths.h"
 
 namespace testbed::test {
 

@@ -23,6 +23,7 @@
 
 #include "testbed/io/image_io.h"
 #include "tests/cli_helpers.h"
+#include "testbed_test_paths.h"
 
 namespace {
 

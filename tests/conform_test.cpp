@@ -10,6 +10,7 @@
 
 #include "testbed/technique/registry.h"
 #include "tests/cli_helpers.h"
+#include "testbed_test_paths.h"
 
 namespace testbed {
 namespace {

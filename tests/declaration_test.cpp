@@ -16,6 +16,7 @@
 #include "testbed/technique/declaration.h"
 #include "tests/cli_helpers.h"
 #include "tests/gl_fixture.h"
+#include "testbed_test_paths.h"
 
 namespace testbed::test {
 namespace {

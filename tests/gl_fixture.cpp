@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "groundtruth/shadow_volumes.h"
+#include "testbed_test_paths.h"
 
 namespace testbed::test {
 

@@ -15,6 +15,7 @@
 
 #include "testbed/io/image_io.h"
 #include "tests/sweep_test_support.h"
+#include "testbed_test_paths.h"
 
 namespace testbed::test {
 namespace {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "tests/cli_helpers.h"
+#include "testbed_test_paths.h"
 
 namespace {
 

@@ -22,6 +22,7 @@
 #include "testbed/harness/frame_runner.h"
 #include "testbed/metrics/metrics.h"
 #include "tests/gl_fixture.h"
+#include "testbed_test_paths.h"
 
 namespace testbed {
 namespace {

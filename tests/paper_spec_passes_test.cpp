@@ -16,6 +16,7 @@
 #include "testbed/sweep/sweep_spec.h"
 #include "testbed/sweep/sweep_table.h"
 #include "tests/gl_fixture.h"
+#include "testbed_test_paths.h"
 
 namespace testbed::test {
 namespace {

@@ -15,6 +15,7 @@
 
 #include "testbed/harness/frame_runner.h"
 #include "tests/gl_fixture.h"
+#include "testbed_test_paths.h"
 
 namespace testbed {
 namespace {

@@ -19,6 +19,7 @@
 #include "testbed/io/image_io.h"
 #include "testbed/technique/plugin.h"
 #include "tests/cli_helpers.h"
+#include "testbed_test_paths.h"
 
 namespace {
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "testbed/technique/registry.h"
+#include "testbed_test_paths.h"
 
 namespace testbed {
 namespace {

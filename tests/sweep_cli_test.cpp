@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/sweep_test_support.h"
+#include "testbed_test_paths.h"
 
 namespace testbed::test {
 namespace {

@@ -29,6 +29,7 @@
 #include "testbed/viewer/panel.h"
 #include "testbed/viewer/viewer.h"
 #include "tests/cli_helpers.h"
+#include "testbed_test_paths.h"
 
 extern char** environ;
 

@@ -15,6 +15,7 @@
 
 #include "testbed/harness/metric_table.h"
 #include "tests/cli_helpers.h"
+#include "testbed_test_paths.h"
 
 namespace testbed::test {
 namespace {

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
+#include "testbed_build_paths.h"
 
 extern char** environ;
 

@@ -10,6 +10,7 @@
 #include "testbed/core/error.h"
 #include "testbed/harness/metric_table.h"
 #include "tests/cli_helpers.h"
+#include "testbed_test_paths.h"
 
 namespace testbed {
 namespace {

@@ -24,6 +24,7 @@
 #include "testbed/scene/primitives.h"
 #include "testbed/scene/scene.h"
 #include "testbed/scene/view.h"
+#include "testbed_build_paths.h"
 
 namespace testbed {
 namespace {
@@ -689,11 +690,7 @@ class Parser {
 
 fs::path assetDirectory() {
   if (const char* dir = std::getenv("TESTBED_ASSET_DIR"); dir && *dir) return dir;
-#ifdef TESTBED_DEFAULT_ASSET_DIR
   return TESTBED_DEFAULT_ASSET_DIR;
-#else
-  return "assets";
-#endif
 }
 
 Scene parseScene(const json& document, const fs::path& file) {

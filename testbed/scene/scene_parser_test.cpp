@@ -14,6 +14,7 @@
 #include "testbed/core/error.h"
 #include "testbed/scene/scene.h"
 #include "tests/cli_helpers.h"
+#include "testbed_test_paths.h"
 
 namespace testbed {
 namespace {
