@@ -168,6 +168,8 @@ def draw(axis, points, xlabel, ylabel):
 def plot(scenes, tables, error_name, out_dir):
     import matplotlib
     matplotlib.use("Agg")  # headless
+    # Labels come from users' specs and scenes: text, never TeX ("$5", "$\frac$").
+    matplotlib.rcParams["text.parse_math"] = False
     import matplotlib.pyplot as plt
     for cost_name, title, _ in tables:
         medians = corpus_medians(scenes, cost_name)

@@ -217,6 +217,8 @@ def markdown(results, baseline, flagged, notes):
 def plot(results, out_dir):
     import matplotlib
     matplotlib.use("Agg")  # headless
+    # Labels come from users' specs and scenes: text, never TeX ("$5", "$\frac$").
+    matplotlib.rcParams["text.parse_math"] = False
     import matplotlib.pyplot as plt
     written = []
     for name, per_label in results.items():

@@ -18,6 +18,8 @@ import sys
 import matplotlib
 
 matplotlib.use("Agg")  # headless
+# Labels come from users' specs and scenes: text, never TeX ("$5", "$\frac$").
+matplotlib.rcParams["text.parse_math"] = False
 import matplotlib.pyplot as plt  # noqa: E402
 
 # (key path in a record, legend label, line style); the left axis's series.

@@ -11,6 +11,8 @@ import sys
 import matplotlib
 
 matplotlib.use("Agg")  # headless
+# Labels come from users' specs and scenes: text, never TeX ("$5", "$\frac$").
+matplotlib.rcParams["text.parse_math"] = False
 import matplotlib.lines  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 
