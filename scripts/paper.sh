@@ -40,6 +40,7 @@ trap 'rm -rf "$work"' EXIT
 # paths relative to it: the command each table's header records is then the one that
 # reproduces it from the repository's root, and names no folder of this machine.
 ln -s "$repo/paper" "$work/paper"
+ln -s "$repo/scenes" "$work/scenes"  # specs may name the bundled scenes (../scenes/bunny.json)
 mkdir -p "$work/results/paper"
 mkdir -p "$repo/results/paper"
 
