@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Regenerates results/paper/: every bundled paper spec (paper/*.json: GI 2016 Tables 2-5
-# and Figure 9, EDTSM* Tables 1-4) through `testbed sweep`, one folder per table with its
+# and Figure 9, EDTSM* Tables 1-4, the Unity spot-light paper's Tables 3-4) through
+# `testbed sweep --path paper` (the papers' passes and memory, docs/paths.md; a `--path`
+# among the extra arguments wins), one folder per table with its
 # table (<name>.md: the paper's rows and columns, ours beside the paper's, ratios to SM;
 # each file's header names the command, the machine and the backend), the table's data
 # (<name>.json), its plot (<name>.png, .svg), the close-up figures (<name>-closeup-<scene>.png:
@@ -15,6 +17,8 @@
 # EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
 # shadow mapping", Computers & Graphics 71 (2018).
 # GI 2016: Macedo & Apolinário, "Revectorization-Based Shadow Mapping", Graphics Interface 2016.
+# Unity: Macedo, Teixeira, Apolinário & Agüero, "Hard Shadow Anti-Aliasing for Spot Lights in a
+# Game Engine".
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$repo/scripts/setup.sh"
@@ -25,12 +29,18 @@ else
   specs=()
   for file in "$repo"/paper/*.json; do specs+=("$(basename "$file" .json)"); done
 fi
+# The papers' tables measure the papers' structure: the paper path, unless the caller names one.
+path_args=(--path paper)
+for arg in "$@"; do
+  case "$arg" in --path | --path=*) path_args=() ;; esac
+done
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 # The sweeps run in $work, which mirrors the repository's paper/ and results/paper/, with
 # paths relative to it: the command each table's header records is then the one that
 # reproduces it from the repository's root, and names no folder of this machine.
 ln -s "$repo/paper" "$work/paper"
+ln -s "$repo/scenes" "$work/scenes"  # specs may name the bundled scenes (../scenes/bunny.json)
 mkdir -p "$work/results/paper"
 mkdir -p "$repo/results/paper"
 
@@ -62,7 +72,7 @@ for name in "${specs[@]}"; do
   n=$((n + 1))
   echo "== paper table $n/${#specs[@]}: $name" >&2
   status=0
-  (cd "$work" && "$testbed" sweep --spec "paper/$name.json" --out "results/paper/$name" "$@") || status=$?
+  (cd "$work" && "$testbed" sweep --spec "paper/$name.json" --out "results/paper/$name" "${path_args[@]}" "$@") || status=$?
   if [ "$status" -ne 0 ]; then
     # The tables finished before this one are already in results/paper/ and stay there.
     echo "paper.sh: $name failed (exit $status); kept ${#done_tables[@]} finished table(s)${done_tables[*]:+: ${done_tables[*]}}" >&2

@@ -181,6 +181,8 @@ TEST_F(HostileMerge, WhatIsMergedIsVerifiedAndNothingIsWritten) {
   json otherTechnique = records, otherParams = records;
   otherTechnique[0]["technique"] = otherTechnique[0]["technique"] == "sm" ? "pcf" : "sm";
   otherParams[0]["params"]["kernel"] = 5;  // a parameter its cell does not have
+  json otherPath = records;  // as if shard 2 ran with the other --path
+  for (auto& record : otherPath) record["path"] = record["path"] == "paper" ? "fast" : "paper";
   json badOverrides = manifest;
   badOverrides["overrides"] = {{"shadow_map", "big"}};
   std::string huge = records.dump();
@@ -192,6 +194,7 @@ TEST_F(HostileMerge, WhatIsMergedIsVerifiedAndNothingIsWritten) {
       {"edited-spec", "spec.json", editedSpec.dump(), "edited-spec/spec.json: does not match the shard's spec_fingerprint"},
       {"other-technique", "records.json", otherTechnique.dump(), "other-technique/records.json: [0].technique: "},
       {"other-params", "records.json", otherParams.dump(), ".params: "},
+      {"other-path", "records.json", otherPath.dump(), "other-path/records.json: [0].path: made on the "},
       {"bad-overrides", "sweep.json", badOverrides.dump(), "bad-overrides/sweep.json: overrides.shadow_map: expected an integer"},
       {"huge-number", "records.json", huge, "huge-number/records.json: [0].cell: not a finite number"},
       {"deep", "spec.json", std::string(70000, '[') + std::string(70000, ']'), "deep/spec.json: JSON nested deeper than 64 levels"},

@@ -4,9 +4,11 @@
 // capped reader; the spec fingerprint recomputed from the shard's own spec.json and
 // overrides; shards of another spec, other overrides or another build, a shard given
 // twice or missing refused; each record matched against its cell; figure images decoded
-// only at their cell's size and channels; --out never an input. Records of different
-// backends are kept in tables of their own.
+// only at their cell's size and channels; --out never an input; records made on
+// different paths (docs/paths.md: different passes and memory) refused. Records of
+// different backends are kept in tables of their own.
 #include <iostream>
+#include <optional>
 #include <set>
 
 #include "groundtruth/shadow_volumes.h"
@@ -16,6 +18,7 @@
 #include "testbed/core/error.h"
 #include "testbed/io/json_input.h"
 #include "testbed/sweep/sweep_records.h"
+#include "testbed/technique/path.h"
 #include "testbed/technique/registry.h"
 
 namespace testbed {
@@ -52,6 +55,10 @@ struct ShardDir {
   json manifest, records, spec;
   Shard shard;
 };
+
+std::string pathText(const std::optional<TechniquePath>& path) {
+  return path ? "the " + std::string(pathName(*path)) + " path" : "no recorded path";
+}
 
 std::string field(const ShardDir& s, const char* name) {
   if (!s.manifest.contains(name) || !s.manifest[name].is_string())
@@ -124,10 +131,19 @@ CommandRunner addMergeCommand(CLI::App& app) {
         planSweep(spec, overridesFromJson(first.manifest["overrides"], (first.dir / "sweep.json").string() + ": overrides"));
     std::vector<Record> records;
     std::map<std::size_t, const ShardDir*> ownerOf;
+    std::string firstWhere;  // the first record, whose path every other must share
+    std::optional<TechniquePath> firstPath;
     for (const auto& s : shards)
       for (std::size_t i = 0; i < s.records.size(); ++i) {
         const std::string where = (s.dir / "records.json").string() + ": [" + std::to_string(i) + "]";
         Record record = readRecord(s.records[i], where);
+        if (firstWhere.empty()) {
+          firstWhere = where;
+          firstPath = record.path;
+        } else if (record.path != firstPath) {
+          throw InputError(where + ".path: made on " + pathText(record.path) + ", " + firstWhere + " on " +
+                           pathText(firstPath) + "; one table's shards run on one path (--path)");
+        }
         if (!record.cell || *record.cell >= plan.cells.size())
           throw InputError(where + ".cell: missing or not a cell of the spec's " + std::to_string(plan.cells.size()));
         const std::size_t cell = *record.cell;

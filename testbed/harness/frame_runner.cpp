@@ -117,6 +117,16 @@ TechniqueSession::Frame TechniqueSession::renderFrame() {
   return frame;
 }
 
+PassTimes TechniqueSession::shadeFrame() {
+  PassTimer timer;
+  {
+    auto scope = timer.scope("shading");
+    runner_.shading_.draw(runner_.gbuffer_, runner_.light_, target_.color(), runner_.settings_.size);
+  }
+  checkGlError("shading " + id_ + "'s frame");
+  return timer.resolve();
+}
+
 std::vector<GpuMemoryLedger::Resource> TechniqueSession::memory() const {
   if (info_.passes.empty()) return ledger_.resources();
   return declaredMemory(id_, info_.resources, ledger_.resources());
@@ -139,17 +149,20 @@ TechniqueRun FrameRunner::run(TechniqueSession& session, const ParameterSet& par
   TechniqueRun result;
   result.id = session.id();
   result.params = parameters.toJson();
-  if (warmUp) session.renderFrame();  // shader compilation and first allocations
-  std::vector<TechniqueSession::Frame> frames;
-  for (int i = 0; i < settings_.repeat; ++i) frames.push_back(session.renderFrame());
-
-  std::vector<PassTimes> times;
+  if (warmUp) {  // shader compilation and first allocations
+    session.renderFrame();
+    session.shadeFrame();
+  }
+  std::vector<PassTimes> times, shading;
   std::vector<double> cpu;
-  for (const auto& f : frames) {
-    times.push_back(f.times);
-    cpu.push_back(f.cpuMs);
+  for (int i = 0; i < settings_.repeat; ++i) {
+    const TechniqueSession::Frame frame = session.renderFrame();
+    times.push_back(frame.times);
+    cpu.push_back(frame.cpuMs);
+    shading.push_back(session.shadeFrame());
   }
   result.times = medianPassTimes(times);
+  result.shadingTimes = medianPassTimes(shading);
   result.cpuMs = median(cpu);
   result.memoryBytes = session.memoryBytes();
   result.memory = session.memory();

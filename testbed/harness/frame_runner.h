@@ -17,6 +17,7 @@
 #include "testbed/gl/render_target.h"
 #include "testbed/io/image_io.h"
 #include "testbed/gl/depth_format.h"
+#include "testbed/harness/shading.h"
 #include "testbed/render/gbuffer_pass.h"
 #include "testbed/render/gpu_scene.h"
 #include "testbed/scene/scene.h"
@@ -51,6 +52,7 @@ struct TechniqueRun {
   nlohmann::json params;
   ImageF visibility;         // one channel, top-down, NaN where no receiver
   PassTimes times;           // medians over the timed frames (medianPassTimes)
+  PassTimes shadingTimes;    // the harness's shading pass after each of them (shading.h), medians
   double cpuMs = 0;          // median wall time of a frame, glFinish to glFinish
   std::uint64_t memoryBytes = 0;
   std::vector<GpuMemoryLedger::Resource> memory;  // memoryBytes split by resource
@@ -71,6 +73,9 @@ class TechniqueSession {
     double cpuMs = 0;
   };
   Frame renderFrame();
+  // The harness's shading pass (shading.h) over the last frame's visibility, timed on its own
+  // as "shading": the papers' frames end with it, the technique's passes do not include it.
+  PassTimes shadeFrame();
   std::uint64_t memoryBytes() const { return ledger_.bytes(); }
   // memoryBytes() split by resource, each checked against the technique's declaration
   // (technique/declaration.h: throws DeclarationError on an undeclared allocation).
@@ -122,6 +127,8 @@ class FrameRunner {
   // The light's transforms every technique renders with (fitted, scene/light_fit.h).
   const LightTransforms& light() const { return light_; }
   std::size_t triangleCount() const { return geometry_.triangleCount(); }
+  // The last shading pass's image (RGBA8, bottom-up; TechniqueSession::shadeFrame).
+  const Texture& shadedFrame() const { return shading_.color(); }
   // G-buffer readback, top-down: xyz world position, w coverage.
   const ImageF& positions() const { return positions_; }
 
@@ -136,6 +143,8 @@ class FrameRunner {
   GpuScene geometry_;
   GBuffer gbuffer_;
   PassTimes gbufferTimes_;
+  // Its target is the harness's, booked to no technique.
+  ShadingPass shading_;
   ImageF positions_, normals_;  // G-buffer readback for shading, top-down
 };
 

@@ -230,6 +230,7 @@ Record read(const Reader& r) {
   const Reader error = r["error"];
   if (!error.value.is_null() && !error.value.is_object()) error.fail("expected an object or null");
   if (r.has("cell")) out.cell = std::size_t(r["cell"].count());
+  if (r.has("shading_ms")) out.shadingMs = r["shading_ms"].magnitude();
   if (r.has("sequence")) {
     const Reader sequence = r["sequence"];
     if (!sequence.value.is_object() || !sequence.has("series")) sequence.fail("expected an object with \"series\"");
@@ -278,6 +279,7 @@ Record makeRecord(const TechniqueRun& run, const FrameRunner& runner, const std:
   r.timing = timingSourceFor(backend);
   r.cpuMs = run.cpuMs;
   r.gbufferMs = frameTimeMs(runner.gbufferTimes(), r.timing);
+  if (!run.shadingTimes.order.empty()) r.shadingMs = frameTimeMs(run.shadingTimes, r.timing);
   r.repeat = s.repeat;
   r.triangles = runner.triangleCount();
   r.memoryBytes = run.memoryBytes;
@@ -344,6 +346,7 @@ void to_json(json& out, const Record& r) {
          {"backend", r.backend},
          {"error", nullptr}};
   if (r.cell) out["cell"] = *r.cell;
+  if (r.shadingMs) out["shading_ms"] = *r.shadingMs;
   if (r.sequence) out["sequence"] = *r.sequence;
   if (r.path) out["path"] = std::string(pathName(*r.path));
   if (r.memory) out["memory"] = memoryJson(*r.memory);

@@ -34,6 +34,9 @@ struct Record {
   PassesRecord gpu, wall;
   TimingSource timing = TimingSource::Gpu;  // which of gpu and wall is the frame's time
   double cpuMs = 0, gbufferMs = 0;
+  // The harness's shading pass after the frame ("shading_ms", harness/shading.h), in the
+  // measure `timing` names; in no total. None in records written before it was timed.
+  std::optional<double> shadingMs;
   int repeat = 1;
   std::uint64_t triangles = 0, memoryBytes = 0;
   // The run's path ("path": docs/paths.md) and memoryBytes split by resource ("memory":

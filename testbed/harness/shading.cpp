@@ -29,4 +29,21 @@ ImageF shadeVisibility(const ImageF& positions, const ImageF& normals, const Lig
   return image;
 }
 
+void ShadingPass::draw(const GBuffer& gbuffer, const LightTransforms& light, const Texture& visibility,
+                       glm::ivec2 size) {
+  if (!program_) program_ = Program::graphics("testbed/render/fullscreen.vert", "testbed/harness/shading.frag");
+  target_.ensure({.size = size, .color = GL_RGBA8});
+  glBindTextureUnit(0, gbuffer.position().id());
+  glBindTextureUnit(1, gbuffer.shadingNormal().id());
+  glBindTextureUnit(2, visibility.id());
+  program_.use();
+  program_.set("uPosition", 0);
+  program_.set("uShadingNormal", 1);
+  program_.set("uVisibility", 2);
+  program_.set("uOrthographic", light.orthographic ? 1 : 0);
+  program_.set("uLightPosition", light.position);
+  program_.set("uLightDirection", light.direction);
+  screen_.draw(program_, target_.framebuffer(), size);
+}
+
 }  // namespace testbed

@@ -270,15 +270,30 @@ std::string sequenceHtml(const std::string& scene, const std::vector<json>& reco
 namespace testbed {
 namespace {
 
-// "12.3 (paper 1.9) · 1.05× (paper 1.00×)": ours beside the paper's, and the ratios to sm.
-std::string sweepEntryText(const nlohmann::json& row, std::size_t column) {
-  auto number = [&](const char* key, int digits) {
+// "12.3 (paper 1.9) · 1.05× (paper 1.00×) · +0.6 ms −SM (paper +0.1)": ours beside the
+// paper's, the ratio to sm and, where the spec asks, the difference to sm. A column without
+// paper figures (a study of one's own) shows ours alone.
+std::string sweepEntryText(const nlohmann::json& table, const nlohmann::json& row, std::size_t column) {
+  auto value = [&](const char* key) -> std::optional<double> {
     const nlohmann::json& values = row.at(key);
-    if (column >= values.size() || !values[column].is_number()) return std::string("–");
-    return formatFixed(values[column].get<double>(), digits);
+    if (column >= values.size() || !values[column].is_number()) return std::nullopt;
+    return values[column].get<double>();
   };
-  std::string text = number("ours", 2) + " (paper " + number("paper", 2) + ")";
-  if (row.contains("ours_ratio")) text += " · " + number("ours_ratio", 2) + "× (paper " + number("paper_ratio", 2) + "×)";
+  auto number = [&](const char* key, int digits) { return formatFixed(value(key), digits); };
+  auto signedNumber = [&](const char* key, int digits) {
+    const std::optional<double> v = value(key);
+    return (v && *v > 0 ? "+" : "") + formatFixed(v, digits);
+  };
+  const nlohmann::json paperColumns = table.value("paper_columns", nlohmann::json::array());
+  const bool paper = column < paperColumns.size() && paperColumns[column].is_boolean() && paperColumns[column].get<bool>();
+  auto paperPart = [&](const std::string& figure) { return paper ? " (paper " + figure + ")" : std::string(); };
+  std::string text = number("ours", 2) + paperPart(number("paper", 2));
+  if (row.contains("ours_ratio")) text += " · " + number("ours_ratio", 2) + "×" + paperPart(number("paper_ratio", 2) + "×");
+  if (row.contains("ours_difference")) {
+    const std::string unit = table.value("unit", std::string());
+    text += " · " + signedNumber("ours_difference", 2) + (unit.empty() ? "" : " " + unit) + " −SM" +
+            paperPart(signedNumber("paper_difference", 2));
+  }
   return text;
 }
 
@@ -328,7 +343,7 @@ std::string sweepHtml(const std::string& name, const std::vector<std::pair<std::
         const std::optional<double> value =
             c < ours.size() && ours[c].is_number() ? std::optional<double>(ours[c].get<double>()) : std::nullopt;
         const bool linked = r < entries.size() && c < entries[r].size() && !entries[r][c].empty();
-        cells.push_back(htmlCell(sweepEntryText(row, c), value, linked ? "#cell-" + std::to_string(entries[r][c].front()) : ""));
+        cells.push_back(htmlCell(sweepEntryText(table, row, c), value, linked ? "#cell-" + std::to_string(entries[r][c].front()) : ""));
       }
       rows.push_back(htmlRow(cells));
     }

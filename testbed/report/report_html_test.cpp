@@ -53,5 +53,25 @@ TEST(ReportHtml, DocumentKeepsScriptTextInsideItsElement) {
   EXPECT_EQ(page.find("http"), std::string::npos);  // nothing fetched from a network
 }
 
+// A sweep entry shows the paper's figures only in columns that have any: a study of one's
+// own shows ours alone, never "(paper –)"; a spec's differences show beside the ratio.
+TEST(ReportHtml, SweepEntriesShowThePapersFiguresOnlyWhereThereAreSome) {
+  auto table = [](bool paper, bool differences) {
+    nlohmann::json row = {{"label", "RBSM"}, {"ours", {2.5}}, {"paper", {paper ? nlohmann::json(5.1) : nlohmann::json()}},
+                          {"ours_ratio", {1.25}}, {"paper_ratio", {paper ? nlohmann::json(1.02) : nlohmann::json()}}};
+    if (differences) {
+      row["ours_difference"] = {0.5};
+      row["paper_difference"] = {0.1};
+    }
+    return nlohmann::json{{"title", "t"}, {"unit", "ms"}, {"columns", {"1024²"}}, {"paper_columns", {paper}},
+                          {"has_paper", paper}, {"rows", {row}}};
+  };
+  const std::string study = sweepHtml("study", {{"study", table(false, false)}}, {}, {}, {}, false);
+  EXPECT_NE(study.find("2.50 · 1.25×"), std::string::npos);
+  EXPECT_EQ(study.find("(paper"), std::string::npos);
+  const std::string paper = sweepHtml("paper", {{"paper", table(true, true)}}, {}, {}, {}, false);
+  EXPECT_NE(paper.find("2.50 (paper 5.10) · 1.25× (paper 1.02×) · +0.50 ms −SM (paper +0.10)"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace testbed

@@ -16,8 +16,9 @@ void checkDeclaredPasses(const SweepSpec& spec) {
       const std::vector<std::string> declared = passNames(findTechnique(id).info->passes);
       if (declared.empty()) continue;  // a technique without a declaration reports its passes by rendering
       for (const auto& pass : *r.passes) {
-        if (pass == "gbuffer" || std::find(declared.begin(), declared.end(), pass) != declared.end()) continue;
-        std::string known = "gbuffer";
+        if (isHarnessPass(pass) || std::find(declared.begin(), declared.end(), pass) != declared.end()) continue;
+        std::string known;
+        for (const char* name : kHarnessPasses) known += std::string(known.empty() ? "" : ", ") + name;
         for (const auto& name : declared) known += ", " + name;
         throw InputError(spec.file.string() + ": rows[" + std::to_string(row) + "].passes: " + id +
                          " declares no pass '" + pass + "' (its passes: " + known + ")");

@@ -521,6 +521,12 @@ SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneF
         if (std::count(parsed.passes->begin(), parsed.passes->end(), parsed.passes->back()) > 1)
           r.fail(where, "\"" + parsed.passes->back() + "\" is already in the list");
       }
+      // "frame" holds the G-buffer and every pass of the technique: any of them beside it
+      // would count twice.
+      const auto& names = *parsed.passes;
+      if (std::count(names.begin(), names.end(), "frame") == 1 &&
+          names.size() > std::size_t(1 + std::count(names.begin(), names.end(), "shading")))
+        r.fail(key + ".passes", "\"frame\" is the whole frame already; only \"shading\" may join it");
     }
     if (row.contains("not_measured")) parsed.notMeasured = r.text(row["not_measured"], key + ".not_measured");
     if (row.contains("not_measured_columns")) {
@@ -567,6 +573,10 @@ SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneF
     }
   }
   return spec;
+}
+
+bool isHarnessPass(const std::string& pass) {
+  return std::find(kHarnessPasses.begin(), kHarnessPasses.end(), pass) != kHarnessPasses.end();
 }
 
 }  // namespace testbed

@@ -46,12 +46,19 @@ struct SweepColumn {
   SweepSettings set;
 };
 
+// What a row's `passes` may name beside its technique's own passes: "gbuffer" (the G-buffer
+// pass), "frame" (the whole frame, frame_ms's: G-buffer plus every pass of the technique)
+// and "shading" (the harness's shading pass after the frame, harness/shading.h, in no
+// frame: EDTSM* Table 4's totals add it as the paper's do).
+inline constexpr std::array<const char*, 3> kHarnessPasses = {"gbuffer", "frame", "shading"};
+bool isHarnessPass(const std::string& pass);
+
 struct SweepRow {
   std::string group;                    // shown once per run of equal groups ("3 × 3")
   std::string label;                    // the paper's row name
   std::vector<std::string> techniques;  // several: the mean of their values (the papers' "pre-filtering")
   SweepSettings set;
-  // Sum of these passes instead of the whole frame ("gbuffer" names the G-buffer pass).
+  // Sum of these passes instead of the whole frame: the technique's own or kHarnessPasses.
   std::optional<std::vector<std::string>> passes;
   // Non-empty: entries we cannot measure (no such step here, a kernel beyond our range),
   // shown as "—" with this reason; all columns, or only those in notMeasuredColumns.

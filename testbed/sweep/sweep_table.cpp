@@ -14,17 +14,24 @@ namespace {
 
 using nlohmann::json;
 
-double passMs(const Record& record, const std::string& pass, const SweepSpec& spec, std::size_t row) {
-  if (pass == "gbuffer") return record.gbufferMs;
+// The G-buffer's and the technique's shares of `pass` in `record`, in the record's timing.
+struct PassShare {
+  double gbufferMs = 0, techniqueMs = 0;
+};
+
+PassShare passShare(const Record& record, const std::string& pass, const SweepSpec& spec, std::size_t row) {
+  if (pass == "gbuffer") return {record.gbufferMs, 0};
+  if (pass == "frame") return {record.gbufferMs, record.timed().totalMs};
+  if (pass == "shading" && record.shadingMs) return {0, *record.shadingMs};
   const auto& passes = record.timed().passesMs;
   const auto it = passes.find(pass);
   if (it == passes.end()) {
-    std::string known = "gbuffer";
+    std::string known = record.shadingMs ? "gbuffer, frame, shading" : "gbuffer, frame";
     for (const auto& [name, value] : passes) known += ", " + name;
     throw InputError(spec.file.string() + ": rows[" + std::to_string(row) + "].passes: " + record.technique +
                      " has no pass '" + pass + "' (its passes: " + known + ")");
   }
-  return it->second;
+  return {0, it->second};
 }
 
 // One technique's value in the table's measure; a row with `passes` measures the frame
@@ -36,8 +43,11 @@ double cellValue(const Record& record, const SweepSpec& spec, std::size_t row) {
   part.gbufferMs = 0;
   PassesRecord& timed = part.timing == TimingSource::Wall ? part.wall : part.gpu;
   timed.totalMs = 0;
-  for (const auto& pass : *r.passes)
-    (pass == "gbuffer" ? part.gbufferMs : timed.totalMs) += passMs(record, pass, spec, row);
+  for (const auto& pass : *r.passes) {
+    const PassShare share = passShare(record, pass, spec, row);
+    part.gbufferMs += share.gbufferMs;
+    timed.totalMs += share.techniqueMs;
+  }
   return spec.measure.value(part).value_or(NAN);
 }
 
@@ -49,7 +59,7 @@ void checkSweepPasses(const SweepSpec& spec, const SweepPlan& plan, std::size_t 
     bool reads = false;
     for (const auto& entry : plan.entries[row]) reads = reads || std::find(entry.begin(), entry.end(), cell) != entry.end();
     if (!reads) continue;
-    for (const auto& pass : *spec.rows[row].passes) passMs(record, pass, spec, row);
+    for (const auto& pass : *spec.rows[row].passes) passShare(record, pass, spec, row);
   }
 }
 

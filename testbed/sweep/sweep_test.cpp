@@ -12,6 +12,7 @@
 
 #include "testbed/core/error.h"
 #include "testbed/sweep/sweep_plan.h"
+#include "testbed/sweep/sweep_passes.h"
 #include "testbed/sweep/sweep_records.h"
 #include "testbed/sweep/sweep_spec.h"
 #include "testbed/sweep/sweep_table.h"
@@ -227,6 +228,44 @@ TEST(SweepTable, DifferencesToSm) {
   EXPECT_FALSE(buildSweepTable(parseSweepSpec(tinySpec(), kSpecFile), plan, records).hasDifferences);
   document["differences"] = "yes";
   EXPECT_THROW(parseSweepSpec(document, kSpecFile), InputError);
+}
+
+// "shading" reads the harness's shading pass (shading_ms), which no frame holds; "frame" is
+// the whole frame, so EDTSM* Table 4's total is ["frame", "shading"]; the spec's passes
+// with them pass the declaration check.
+TEST(SweepTable, TheShadingPassAndTheWholeFrame) {
+  json document = tinySpec();
+  document["rows"].push_back({{"label", "SM shading"}, {"techniques", {"sm"}}, {"passes", {"shading"}}});
+  document["rows"].push_back({{"label", "SM total"}, {"techniques", {"sm"}}, {"passes", {"frame", "shading"}}});
+  const SweepSpec spec = parseSweepSpec(document, kSpecFile);
+  EXPECT_NO_THROW(checkDeclaredPasses(spec));
+  const SweepPlan plan = planSweep(spec, {});
+  std::map<std::size_t, Record> records;
+  for (std::size_t i = 0; i < plan.cells.size(); ++i) {
+    records[i] = fakeRecord(plan.cells[i], 2, 1, 1 << 20);
+    records[i].shadingMs = 0.25;
+  }
+  const SweepTable table = buildSweepTable(spec, plan, records);
+  const std::size_t shading = table.rows.size() - 2, total = table.rows.size() - 1;
+  EXPECT_DOUBLE_EQ(*table.rows[shading].ours[0], 0.25);
+  EXPECT_DOUBLE_EQ(*table.rows[total].ours[0], 1.0 + 2.0 + 0.25);  // G-buffer + technique + shading
+  EXPECT_DOUBLE_EQ(*table.rows[0].ours[0], 3.0);                   // a whole frame holds no shading
+  // A record made before the pass was timed has no "shading": the row's error names it.
+  for (auto& [cell, record] : records) record.shadingMs.reset();
+  try {
+    buildSweepTable(spec, plan, records);
+    ADD_FAILURE() << "no error for records without shading_ms";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(".passes: sm has no pass 'shading'"), std::string::npos) << e.what();
+  }
+  // "frame" already holds the G-buffer and every pass: nothing but "shading" may join it.
+  document["rows"].back()["passes"] = {"frame", "gbuffer"};
+  try {
+    parseSweepSpec(document, kSpecFile);
+    ADD_FAILURE() << "accepted frame + gbuffer";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("].passes: \"frame\" is the whole frame already"), std::string::npos) << e.what();
+  }
 }
 
 TEST(SweepTable, MarkdownHasThePapersRowsAndColumns) {
