@@ -3,14 +3,11 @@
 // receiver seen at this pixel (depth-fail) or in front of it (depth-pass), as +weight where
 // the ray leaves a volume (depth-fail) or enters it (depth-pass), -weight otherwise, summed by
 // additive blending. The depth test runs first (depth-pass culls with the G-buffer's
-// depth, conservatively offset); the shader's test alone decides. The camera ray
-// crosses the face's plane before the receiver exactly when camera and receiver lie on
-// opposite sides of it, which is an exact test in world space, free of depth-buffer
-// precision. A receiver within the tie tolerance of a light cap's plane (the cap on its own
-// surface) counts the cap as behind it, so lit surfaces are outside their own volumes; side
-// faces are decided by sign alone. Both modes run the same test and keep complementary
-// faces, so where the eye is in no volume their counts agree exactly.
+// depth, conservatively offset); the shader's exact test (volume_face.glsl) alone decides.
+// Both modes run the same test and keep complementary faces, so where the eye is in no
+// volume their counts agree exactly.
 #include "testbed/glsl/receiver.glsl"
+#include "groundtruth/volume_face.glsl"
 
 layout(early_fragment_tests) in;
 layout(location = 0) out float outCount;
@@ -25,10 +22,7 @@ uniform int uDepthPass;  // 1: count the faces in front of the receiver, 0: thos
 void main() {
   Receiver r;
   if (!loadReceiver(ivec2(gl_FragCoord.xy), r)) discard;
-  float atCamera = dot(vPlane.xyz, uCameraPosition) + vPlane.w;
-  float atReceiver = dot(vPlane.xyz, r.position) + vPlane.w;
-  bool onOwnCap = vLightCap > 0.5 && abs(atReceiver) <= uTieTolerance;
-  bool behind = onOwnCap || (atCamera > 0.0) == (atReceiver > 0.0);
+  bool behind = volumeFaceBehind(vPlane, vLightCap > 0.5, uCameraPosition, r.position, uTieTolerance);
   bool depthPass = uDepthPass == 1;
   if (behind == depthPass) discard;
   // Seen from outside (front face) the ray enters the volume there.

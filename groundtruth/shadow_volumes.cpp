@@ -1,12 +1,13 @@
 #include "groundtruth/shadow_volumes.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <iostream>
 #include <optional>
-#include <tuple>
 
+#include "groundtruth/stencil_counting.h"
 #include "groundtruth/volume_geometry.h"
 #include "testbed/gl/render_target.h"
 #include "testbed/render/gbuffer_pass.h"
@@ -15,6 +16,8 @@
 
 namespace testbed {
 namespace {
+
+std::atomic<std::uint64_t> volumeBuilds{0};
 
 // Light samples over the light's disk, evenly spread by the golden-angle (Vogel) spiral so
 // N samples cover the area uniformly without randomness. For a spot light the disk has
@@ -50,9 +53,13 @@ std::vector<VolumeLight> lightSamples(const LightDesc& desc, const LightTransfor
   return samples;
 }
 
+// How the fast path counts: depth-pass where exact (the ground truth), or always one way
+// (tests and A/B runs).
+enum class Counting { Choose, DepthFail, DepthPass };
+
 class ShadowVolumes final : public ShadowTechnique {
  public:
-  explicit ShadowVolumes(bool area, bool depthFailOnly = false) : area_(area), depthFailOnly_(depthFailOnly) {}
+  explicit ShadowVolumes(bool area, Counting counting = Counting::Choose) : area_(area), counting_(counting) {}
 
   // The area-light reference's one parameter (the point-light one has none).
   struct AreaParameters {
@@ -62,17 +69,42 @@ class ShadowVolumes final : public ShadowTechnique {
     }
   };
 
+  // The paper path runs the stencil shadow volumes GI 2016 compares against
+  // (stencil_counting.h); the fast path counts by blending, depth-pass where exact.
+  static std::vector<PassDeclaration> declaredPasses() {
+    return {{.name = "volumes",
+             .paperStep = "the counting variant: depth-pass (Heidmann 1991) where the eye lies in no volume, else "
+                          "depth-fail (Everitt & Kilgard 2002), each face's ±1 blended into a float count",
+             .only = TechniquePath::Fast},
+            StencilCounting::declaredPass(),
+            {.name = "visibility",
+             .paperStep = "lit where the receiver lies in no volume, its count 0 (Crow 1977): on the paper path the "
+                          "stencil test keeps those pixels, on the fast path the count is read"}};
+  }
+  // In the order the allocations index them.
+  static std::vector<ResourceDeclaration> declaredResources() {
+    return {{.name = "volume-geometry", .formats = {kBufferFormat}, .size = SizeRule::Scene, .role = ResourceRole::Paper},
+            // the fast path's stand-in for the stencil: blending lets depth-pass cull
+            // before the shader runs, which a stencil write forbids
+            {.name = "volume-counts", .formats = {GL_R32F}, .size = SizeRule::Screen, .role = ResourceRole::Device},
+            StencilCounting::declaredStencil()};
+  }
+
   static TechniqueInfo describePoint() {
     return {.id = "groundtruth",
             .output = OutputKind::Hard,
             .citation = "Crow 1977; depth-pass counting: Heidmann 1991; depth-fail: Everitt & Kilgard 2002",
-            .summary = "exact hard shadows: shadow volumes from OpenMesh silhouettes, counted per pixel"};
+            .summary = "exact hard shadows: shadow volumes from OpenMesh silhouettes, counted per pixel",
+            .passes = declaredPasses(),
+            .resources = declaredResources()};
   }
   static TechniqueInfo describeArea() {
     return {.id = "area",
             .output = OutputKind::Filtered,
             .citation = "mean of point-light shadow volumes over the light's disk",
             .summary = "area-light reference for filtered techniques (soft_rmse)",
+            .passes = declaredPasses(),
+            .resources = declaredResources(),
             .parameters = declaredParameters<AreaParameters>()};
   }
 
@@ -83,41 +115,59 @@ class ShadowVolumes final : public ShadowTechnique {
   }
 
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {
-    prepare(in);
+    const bool stencil = in.path == TechniquePath::Paper;
+    prepare(in, stencil);
+    gather(in.scene);
     const float zero = 0.0f;
     glClearTexImage(out.texture.id(), 0, GL_RED, GL_FLOAT, &zero);
     const auto lights = lightSamples(in.scene.light, in.light, samples_);
     const glm::vec3 camera = glm::vec3(glm::inverse(in.camera.view)[3]);
+    view_ = in.camera.view;
+    nearPlane_ = in.scene.camera.nearPlane;
     for (std::size_t s = 0; s < lights.size(); ++s) {
       // Long area-light references show how far they are (one line, rewritten in place).
       if (lights.size() >= 16 && (s % (lights.size() / 8) == 0 || s + 1 == lights.size()))
         std::cerr << "\r  area-light sample " << s + 1 << "/" << lights.size() << (s + 1 == lights.size() ? "\n" : "")
                   << std::flush;
-      const bool depthPass = eyeOutsideEveryVolume(in.scene, lights[s], camera) && !depthFailOnly_;
-      view_ = in.camera.view;
-      nearPlane_ = in.scene.camera.nearPlane;
-      const GLsizei vertexCount = upload(lights[s], depthPass, depthPassBounds(camera));
+      const float weight = 1.0f / float(lights.size());
+      // The paper's technique counts depth-fail wherever the eye is; the fast path
+      // depth-pass where that is exact.
+      const bool depthPass = !stencil && counting_ != Counting::DepthFail &&
+                             (counting_ == Counting::DepthPass || eyeOutsideEveryVolume(lights[s], camera));
+      const GLsizei vertexCount =
+          upload(lights[s], depthPass ? depthPassReaches(lights[s], camera) : closedReaches());
+      if (stencil) {
+        {
+          auto scope = timer.scope(StencilCounting::kPass);
+          stencil_.count(in, out, vertexArray_, vertexCount, camera, tieTolerance());
+        }
+        auto scope = timer.scope("visibility");
+        stencil_.resolve(in, lights[s], weight);
+        continue;
+      }
       {
         auto scope = timer.scope("volumes");
         countVolumes(in, camera, vertexCount, depthPass);
       }
       auto scope = timer.scope("visibility");
-      resolve(in, out, lights[s], 1.0f / float(lights.size()));
+      resolve(in, out, lights[s], weight);
     }
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_CLAMP);
   }
 
  private:
-  void prepare(const FrameInputs& in) {
+  void prepare(const FrameInputs& in, bool stencil) {
+    if (!vertexArray_) vertexArray_ = VertexArray::create();
+    if (stencil) return;  // StencilCounting makes its own
     if (!countProgram_) {
       countProgram_ = Program::graphics("groundtruth/shadow_volume.vert", "groundtruth/shadow_volume.frag");
       resolveProgram_ = Program::graphics("testbed/render/fullscreen.vert", "groundtruth/volume_visibility.frag");
-      vertexArray_ = VertexArray::create();
     }
     // The volume counts, tested against the G-buffer's depth. 32-bit floats keep every
     // running sum of ±1 and ±2 exact up to 2^24 faces per pixel; half floats would round
     // past 2048, which a dense scene (grass, foliage) can reach.
+    auto label = allocating(declaredResources()[1]);
     count_.ensure({.size = in.size, .color = GL_R32F, .borrowedDepth = &in.gbuffer.depth()});
   }
 
@@ -139,13 +189,14 @@ class ShadowVolumes final : public ShadowTechnique {
     meshesOf_ = &scene;
   }
   float sceneExtent() const { return glm::length(hi_ - lo_); }
+  // How near a receiver may lie to a light cap's plane and count as lying on it.
+  float tieTolerance() const { return 1e-5f * sceneExtent(); }
 
   // Depth-pass counting is exact when the eye lies in no volume (then a receiver's count is
   // the number of volume faces entered minus left between the eye and the receiver); the
   // eye is in a volume exactly when its way to the light crosses an occluder's triangle.
   // Decided for every light (sample) and frame, as a real-time renderer would.
-  bool eyeOutsideEveryVolume(const Scene& scene, const VolumeLight& light, const glm::vec3& eye) {
-    gather(scene);
+  bool eyeOutsideEveryVolume(const VolumeLight& light, const glm::vec3& eye) const {
     const float reach = glm::length(glm::max(glm::abs(eye - lo_), glm::abs(eye - hi_))) + 1.0f;
     for (const auto& mesh : meshes_)
       if (eyeMayBeInVolume(mesh, light, eye, reach)) return false;
@@ -170,37 +221,47 @@ class ShadowVolumes final : public ShadowTechnique {
     return !(nearest > nearPlane_ * 1.01f + 1e-3f * sceneExtent());
   }
 
-  // Everything the volumes of one light sample are built from: when a frame has the same
-  // (a still light and objects in an animation, a timed repeat), the last upload stands.
+  // Each mesh's depth-pass reach: its sides ending past the scene and the eye, its light
+  // caps kept where the near plane may clip it.
+  std::vector<VolumeReach> depthPassReaches(const VolumeLight& light, const glm::vec3& eye) const {
+    const auto [lo, hi] = depthPassBounds(eye);
+    std::vector<VolumeReach> reaches;
+    for (const auto& mesh : meshes_) {
+      reaches.push_back(depthPassReach(mesh, light, lo, hi));
+      reaches.back().lightCaps = nearPlaneMayClip(mesh);
+    }
+    return reaches;
+  }
+  // Depth-fail's: every mesh's volumes closed, with caps, to infinity.
+  std::vector<VolumeReach> closedReaches() const { return std::vector<VolumeReach>(meshes_.size()); }
+
+  // Everything the volumes of one light sample are made of, and nothing else: the meshes,
+  // the light's position (point) or direction (directional), and each mesh's reach. The
+  // camera enters only through the reaches, so a frame where only the camera moved (a
+  // dolly, the viewer) keeps the volumes unless a side's far plane or a light cap changes;
+  // depth-fail volumes never depend on it. When a frame has the same inputs (also a still
+  // light and objects, a timed repeat), the last upload stands.
   struct VolumeInputs {
     const Scene* scene = nullptr;
     std::uint64_t revision = 0;
-    bool directional = false, depthPass = false;
-    glm::vec3 position{0}, direction{0}, lo{0}, hi{0};
-    std::vector<bool> lightCaps;
+    bool directional = false;
+    glm::vec3 origin{0};
+    std::vector<VolumeReach> reaches;
     bool operator==(const VolumeInputs&) const = default;
   };
 
   // Builds the volumes of every object for one light sample and uploads them.
-  GLsizei upload(const VolumeLight& light, bool depthPass, const std::pair<glm::vec3, glm::vec3>& bounds) {
-    VolumeInputs inputs{meshesOf_, revision_, light.directional, depthPass, light.position, light.direction, {}, {}, {}};
-    if (depthPass) {
-      std::tie(inputs.lo, inputs.hi) = bounds;
-      for (const auto& mesh : meshes_) inputs.lightCaps.push_back(nearPlaneMayClip(mesh));
-    }
+  GLsizei upload(const VolumeLight& light, std::vector<VolumeReach> reaches) {
+    VolumeInputs inputs{meshesOf_, revision_, light.directional, light.directional ? light.direction : light.position,
+                        std::move(reaches)};
     if (uploaded_ && inputs == *uploaded_) return GLsizei(vertices_.size());
+    ++volumeBuilds;
     uploaded_.reset();
     vertices_.clear();
-    for (std::size_t i = 0; i < meshes_.size(); ++i) {
-      VolumeReach reach;
-      if (depthPass) {
-        reach = depthPassReach(meshes_[i], light, bounds.first, bounds.second);
-        reach.lightCaps = inputs.lightCaps[i];
-      }
-      appendShadowVolume(meshes_[i], light, vertices_, reach);
-    }
+    for (std::size_t i = 0; i < meshes_.size(); ++i) appendShadowVolume(meshes_[i], light, vertices_, inputs.reaches[i]);
     const std::size_t bytes = vertices_.size() * sizeof(VolumeVertex);
     if (bytes > buffer_.bytes()) {
+      auto label = allocating(declaredResources()[0]);
       buffer_ = Buffer::create(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
       vertexArray_.setVertexBuffer(buffer_, sizeof(VolumeVertex));
       vertexArray_.setFloatAttribute(0, 4, offsetof(VolumeVertex, position));
@@ -244,7 +305,7 @@ class ShadowVolumes final : public ShadowTechnique {
     bindReceiverInputs(countProgram_, in);
     countProgram_.set("uViewProjection", in.camera.viewProjection());
     countProgram_.set("uCameraPosition", camera);
-    countProgram_.set("uTieTolerance", 1e-5f * sceneExtent());
+    countProgram_.set("uTieTolerance", tieTolerance());
     countProgram_.set("uDepthPass", depthPass ? 1 : 0);
     glBindVertexArray(vertexArray_.id());
     if (vertexCount > 0) glDrawArrays(GL_TRIANGLES, 0, vertexCount);
@@ -270,12 +331,14 @@ class ShadowVolumes final : public ShadowTechnique {
     glDisable(GL_BLEND);
   }
 
-  bool area_, depthFailOnly_;
+  bool area_;
+  Counting counting_;
   int samples_ = 0;
   Program countProgram_, resolveProgram_;
   VertexArray vertexArray_;
   Buffer buffer_;
   RenderTarget count_;
+  StencilCounting stencil_;  // the paper path's
   std::vector<VolumeVertex> vertices_;
   std::vector<VolumeMesh> meshes_;
   glm::vec3 lo_{0}, hi_{0};  // the scene's bounds
@@ -288,9 +351,17 @@ class ShadowVolumes final : public ShadowTechnique {
 
 }  // namespace
 
+std::uint64_t shadowVolumeBuilds() { return volumeBuilds.load(); }
+
 const RegisteredTechnique& depthFailGroundTruth() {
   static const RegisteredTechnique entry{&keepTechniqueInfo(ShadowVolumes::describePoint(), TESTBED_TECHNIQUE_FAMILY),
-                                         [] { return std::make_unique<ShadowVolumes>(false, true); }};
+                                         [] { return std::make_unique<ShadowVolumes>(false, Counting::DepthFail); }};
+  return entry;
+}
+
+const RegisteredTechnique& depthPassGroundTruth() {
+  static const RegisteredTechnique entry{&keepTechniqueInfo(ShadowVolumes::describePoint(), TESTBED_TECHNIQUE_FAMILY),
+                                         [] { return std::make_unique<ShadowVolumes>(false, Counting::DepthPass); }};
   return entry;
 }
 

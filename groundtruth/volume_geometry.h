@@ -61,6 +61,7 @@ struct VolumeReach {
   glm::vec3 farNormal{0};  // unit; the light's axis or direction
   float farOffset = 0;
   bool twinSidesOnce = false;
+  bool operator==(const VolumeReach&) const = default;
 };
 
 // One vertex of the volume's triangle list. `plane` is the (unit normal, offset) plane of
