@@ -12,9 +12,9 @@
 layout(early_fragment_tests) in;
 layout(location = 0) out float outCount;
 
-flat in vec4 vPlane;
-flat in float vLightCap;
-flat in float vWeight;  // 1, or 2 for a side two volumes share
+layout(location = 0) flat in vec4 vPlane;
+layout(location = 1) flat in float vLightCap;
+layout(location = 2) flat in float vWeight;  // 1, or 2 for a side two volumes share
 uniform vec3 uCameraPosition;
 uniform float uTieTolerance;
 uniform int uDepthPass;  // 1: count the faces in front of the receiver, 0: those behind it

@@ -5,9 +5,9 @@ layout(location = 1) in vec4 inPlane;
 layout(location = 2) in float inLightCap;
 layout(location = 3) in float inWeight;
 uniform mat4 uViewProjection;
-flat out vec4 vPlane;
-flat out float vLightCap;
-flat out float vWeight;
+layout(location = 0) flat out vec4 vPlane;
+layout(location = 1) flat out float vLightCap;
+layout(location = 2) flat out float vWeight;
 void main() {
   vPlane = inPlane;
   vLightCap = inLightCap;

@@ -17,7 +17,7 @@ packages=(
   libembree-dev libcgal-demo assimp-testmodels fonts-dejavu-core
   libimgui-dev libglx-mesa0 libgl1-mesa-dri xvfb
   python3-matplotlib python3-scipy slurm-wlm munge ffmpeg
-  chromium chromium-driver python3-selenium glslang-tools
+  chromium chromium-driver python3-selenium glslang-tools glslang-dev
 )
 
 log() { echo "setup: $*" >&2; }

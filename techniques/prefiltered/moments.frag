@@ -1,7 +1,7 @@
 #version 450 core
 // The moments pass: MOMENTS_ENCODE (moments_format.h) of the fragment's light depth.
 #include "techniques/prefiltered/moments.glsl"
-in float vLightDepth;
+layout(location = 0) in float vLightDepth;
 uniform vec4 uParams;
 layout(location = 0) out vec4 outMoments;
 void main() {

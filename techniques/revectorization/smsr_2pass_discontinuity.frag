@@ -8,7 +8,7 @@
 #include "testbed/glsl/receiver.glsl"
 #include "testbed/render/revectorization/revectorization.glsl"
 
-in vec3 vPosition;
+layout(location = 0) in vec3 vPosition;
 layout(location = 0) out vec4 outDisc;
 
 void main() {

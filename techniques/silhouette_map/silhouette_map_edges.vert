@@ -12,8 +12,8 @@
 layout(std430, binding = 0) readonly buffer Edges { vec4 endpoints[]; };
 uniform mat4 uLightViewProjection;
 uniform float uMapSize;  // N, the depth map's side
-flat out vec3 vA;        // silhouette-space xy, light depth z (as the depth map stores it)
-flat out vec3 vB;
+layout(location = 0) flat out vec3 vA;       // silhouette-space xy, light depth z (as the depth map stores it)
+layout(location = 1) flat out vec3 vB;
 
 vec3 silhouetteSpace(vec4 clip) {
   vec3 ndc = clip.xyz / clip.w;

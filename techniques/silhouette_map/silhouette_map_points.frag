@@ -6,8 +6,8 @@
 #include "techniques/silhouette_map/silhouette_corners.glsl"
 #include "techniques/silhouette_map/silhouette_map.glsl"
 
-flat in vec3 vA;
-flat in vec3 vB;
+layout(location = 0) flat in vec3 vA;
+layout(location = 1) flat in vec3 vB;
 uniform float uOcclusionBias;
 layout(location = 0) out vec2 outPoint;
 

@@ -2,6 +2,7 @@
 
 #include "testbed/core/error.h"
 #include "testbed/gl/gl.h"
+#include "testbed/gl/spirv.h"
 #ifdef TESTBED_WITH_VIEWER
 #include "testbed/gl/context_glfw.h"
 #endif
@@ -27,6 +28,7 @@ void GlContext::finishSetup(void* (*getProc)(const char*)) {
                   std::to_string(GLAD_VERSION_MAJOR(version)) + "." +
                   std::to_string(GLAD_VERSION_MINOR(version)));
   }
+  loadSpirvEntryPoint(getProc);
   const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   description_ = std::string(backendName()) + ": " + (renderer ? renderer : "unknown renderer");
 }

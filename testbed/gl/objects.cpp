@@ -10,6 +10,7 @@
 
 #include "testbed/core/error.h"
 #include "testbed/gl/shader_library.h"
+#include "testbed/gl/spirv.h"
 
 namespace testbed {
 namespace {
@@ -280,64 +281,114 @@ void checkBuilt(GLuint object, GLenum status, PFNGLGETSHADERIVPROC getiv, PFNGLG
   throw GlError(described.empty() ? prefix : described);
 }
 
-// Compiles one stage and appends its full source to `sources` (for declaredUniforms).
-GLuint compileStage(GLenum stage, std::string_view key, std::string_view defines, std::string& sources) {
-  const char* extension = stage == GL_VERTEX_SHADER ? "vert" : stage == GL_FRAGMENT_SHADER ? "frag" : "comp";
+// A stage's final text: expanded, the defines in right after the #version line (which
+// must stay first).
+ExpandedShader expandStage(std::string_view key, std::string_view defines) {
   ExpandedShader expanded = expandShader(key);
   std::string& source = expanded.text;
-  // The defines go right after the #version line, which must stay first.
   const auto versionEnd = source.find('\n');
   if (source.rfind("#version", 0) != 0 || versionEnd == std::string::npos)
     throw GlError(std::string(key) + ": shader must start with #version");
   source.insert(versionEnd + 1, std::string(defines));
-  sources += source;
-  dumpFinalShader(key, extension, source);
-  const char* text = source.c_str();
-  GLuint shader = glCreateShader(stage);
-  glShaderSource(shader, 1, &text, nullptr);
-  glCompileShader(shader);
-  checkBuilt(shader, GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog, glDeleteShader, key, "compile",
-             expanded.files);
-  return shader;
+  return expanded;
 }
 
-GLuint link(std::initializer_list<GLuint> shaders, std::string_view what) {
+const char* stageExtension(GLenum stage) {
+  return stage == GL_VERTEX_SHADER ? "vert" : stage == GL_FRAGMENT_SHADER ? "frag" : "comp";
+}
+
+// The shader objects of a build, deleted with it (linking has them attached by then).
+struct Shaders {
+  std::vector<GLuint> ids;
+  Shaders() = default;
+  Shaders(const Shaders&) = delete;
+  Shaders& operator=(const Shaders&) = delete;
+  ~Shaders() {
+    for (GLuint id : ids) glDeleteShader(id);
+  }
+};
+
+GLuint link(const Shaders& shaders, std::string_view what) {
   GLuint program = glCreateProgram();
-  for (GLuint shader : shaders) glAttachShader(program, shader);
+  for (GLuint shader : shaders.ids) glAttachShader(program, shader);
   glLinkProgram(program);
-  for (GLuint shader : shaders) glDeleteShader(shader);
   checkBuilt(program, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog, glDeleteProgram, what, "link");
   return program;
 }
 
+bool isImage(GLenum type) { return type >= GL_IMAGE_1D && type <= GL_UNSIGNED_INT_IMAGE_2D_MULTISAMPLE_ARRAY; }
+
 }  // namespace
 
-Program::Program(GLuint id, std::string name, std::vector<std::string> declared)
+struct Program::Stage {
+  GLenum stage;
+  std::string_view key;
+  ExpandedShader source;
+};
+
+Program::Program(GLuint id, std::string name, std::vector<std::string> declared, std::optional<Locations> spirvLocations)
     : GlObject(id, 0, [](GLuint program) { glDeleteProgram(program); }),
       name_(std::move(name)),
-      declared_(std::move(declared)) {}
+      declared_(std::move(declared)) {
+  if (!spirvLocations) return;
+  // Keep only the active ones: setting a dropped uniform's location would be a GL error.
+  spirvLocations_.emplace();
+  for (const Active& uniform : activeUniforms())
+    for (const auto& [uniformName, at] : *spirvLocations)
+      if (at == uniform.location) spirvLocations_->emplace(uniformName, at);
+}
+
+Program Program::build(std::vector<Stage> stages, std::string_view name) {
+  std::string sources;
+  for (const Stage& stage : stages) sources += stage.source.text;
+  std::vector<std::string> declared = declaredUniforms(sources);
+  Shaders shaders;
+  if (shaderPath() == ShaderPath::Glsl) {
+    for (const Stage& stage : stages) {
+      dumpFinalShader(stage.key, stageExtension(stage.stage), stage.source.text);
+      const char* text = stage.source.text.c_str();
+      shaders.ids.push_back(glCreateShader(stage.stage));
+      glShaderSource(shaders.ids.back(), 1, &text, nullptr);
+      glCompileShader(shaders.ids.back());
+      checkBuilt(shaders.ids.back(), GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog, [](GLuint) {},
+                 stage.key, "compile", stage.source.files);
+    }
+    return Program(link(shaders, name), std::string(name), std::move(declared));
+  }
+  std::vector<std::string> texts;
+  for (const Stage& stage : stages) texts.push_back(stage.source.text);
+  LocatedUniforms located = locateUniforms(std::move(texts), name);
+  for (std::size_t i = 0; i < stages.size(); ++i) {
+    const Stage& stage = stages[i];
+    const char* extension = stageExtension(stage.stage);
+    dumpFinalShader(stage.key, extension, located.sources[i]);
+    shaders.ids.push_back(createSpirvShader(stage.stage, compileToSpirv(located.sources[i], extension, stage.key,
+                                                                        stage.source.files)));
+    checkBuilt(shaders.ids.back(), GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog, [](GLuint) {},
+               stage.key, "SPIR-V specialize", stage.source.files);
+  }
+  return Program(link(shaders, name), std::string(name), std::move(declared), std::move(located.locations));
+}
 
 Program Program::graphics(std::string_view vertexKey, std::string_view fragmentKey,
                           std::string_view defines) {
-  std::string sources;
-  GLuint vs = compileStage(GL_VERTEX_SHADER, vertexKey, defines, sources);
-  GLuint fs = 0;
-  try {
-    fs = compileStage(GL_FRAGMENT_SHADER, fragmentKey, defines, sources);
-  } catch (...) {
-    glDeleteShader(vs);
-    throw;
-  }
-  return Program(link({vs, fs}, fragmentKey), std::string(fragmentKey), declaredUniforms(sources));
+  std::vector<Stage> stages;
+  stages.push_back({GL_VERTEX_SHADER, vertexKey, expandStage(vertexKey, defines)});
+  stages.push_back({GL_FRAGMENT_SHADER, fragmentKey, expandStage(fragmentKey, defines)});
+  return build(std::move(stages), fragmentKey);
 }
 
 Program Program::compute(std::string_view computeKey, std::string_view defines) {
-  std::string sources;
-  const GLuint cs = compileStage(GL_COMPUTE_SHADER, computeKey, defines, sources);
-  return Program(link({cs}, computeKey), std::string(computeKey), declaredUniforms(sources));
+  std::vector<Stage> stages;
+  stages.push_back({GL_COMPUTE_SHADER, computeKey, expandStage(computeKey, defines)});
+  return build(std::move(stages), computeKey);
 }
 
-GLint Program::location(const char* name) const { return glGetUniformLocation(id(), name); }
+GLint Program::location(const char* name) const {
+  if (!spirvLocations_) return glGetUniformLocation(id(), name);
+  const auto found = spirvLocations_->find(std::string_view(name));
+  return found == spirvLocations_->end() ? -1 : found->second;
+}
 
 GLint Program::checkedLocation(const char* name) const {
   const GLint at = location(name);
@@ -348,25 +399,37 @@ GLint Program::checkedLocation(const char* name) const {
   return at;
 }
 
-std::vector<std::string> Program::unsetUniforms() const {
-  GLint count = 0, longest = 0;
-  glGetProgramiv(id(), GL_ACTIVE_UNIFORMS, &count);
-  glGetProgramiv(id(), GL_ACTIVE_UNIFORM_MAX_LENGTH, &longest);
-  std::vector<std::string> unset;
+std::vector<Program::Active> Program::activeUniforms() const {
+  GLint count = 0;
+  glGetProgramInterfaceiv(id(), GL_UNIFORM, GL_ACTIVE_RESOURCES, &count);
+  GLint longest = 0;
+  glGetProgramInterfaceiv(id(), GL_UNIFORM, GL_MAX_NAME_LENGTH, &longest);
+  std::vector<Active> active;
   std::string name(std::size_t(std::max(longest, 1)), '\0');
   for (GLint i = 0; i < count; ++i) {
+    // Block members and built-ins have location -1; an array reports its first element's.
+    static constexpr GLenum kProperties[] = {GL_LOCATION, GL_TYPE};
+    GLint values[2] = {-1, 0};
+    glGetProgramResourceiv(id(), GL_UNIFORM, GLuint(i), 2, kProperties, 2, nullptr, values);
+    if (values[0] < 0) continue;
     GLsizei length = 0;
-    glGetActiveUniformName(id(), GLuint(i), GLsizei(name.size()), &length, name.data());
+    if (!spirvLocations_) glGetProgramResourceName(id(), GL_UNIFORM, GLuint(i), GLsizei(name.size()), &length, name.data());
     const std::string uniform = name.substr(0, std::size_t(length));
+    active.push_back({uniform.substr(0, uniform.find('[')), values[0], GLenum(values[1])});
+  }
+  if (spirvLocations_)
+    for (Active& uniform : active)
+      for (const auto& [uniformName, at] : *spirvLocations_)
+        if (at == uniform.location) uniform.name = uniformName;
+  return active;
+}
+
+std::vector<std::string> Program::unsetUniforms() const {
+  std::vector<std::string> unset;
+  for (const Active& uniform : activeUniforms()) {
     // Images take their unit from layout(binding = N), never from set().
-    const GLuint index = GLuint(i);
-    GLint type = 0;
-    glGetActiveUniformsiv(id(), 1, &index, GL_UNIFORM_TYPE, &type);
-    if (type >= GL_IMAGE_1D && type <= GL_UNSIGNED_INT_IMAGE_2D_MULTISAMPLE_ARRAY) continue;
-    // Block members and built-ins have no location; an array is set through its first element.
-    const GLint at = glGetUniformLocation(id(), uniform.c_str());
-    if (at >= 0 && !std::binary_search(setLocations_.begin(), setLocations_.end(), at))
-      unset.push_back(uniform.substr(0, uniform.find('[')));
+    if (isImage(uniform.type)) continue;
+    if (!std::binary_search(setLocations_.begin(), setLocations_.end(), uniform.location)) unset.push_back(uniform.name);
   }
   std::sort(unset.begin(), unset.end());
   return unset;

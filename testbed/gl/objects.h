@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <tuple>
@@ -193,7 +194,8 @@ class Program : public GlObject {
                           std::string_view defines = {});
   static Program compute(std::string_view computeKey, std::string_view defines = {});
 
-  // -1 for a uniform the program does not have (or the compiler dropped).
+  // -1 for a uniform the program does not have (or the compiler dropped). Built through
+  // SPIR-V (gl/spirv.h), the program has no uniform names: its own table answers.
   GLint location(const char* name) const;
   void set(const char* name, int value) const;
   void set(const char* name, float value) const;
@@ -209,12 +211,27 @@ class Program : public GlObject {
   std::vector<std::string> unsetUniforms() const;
 
  private:
-  Program(GLuint id, std::string name, std::vector<std::string> declared);
+  struct Stage;
+  // Compiles and links `stages` the way shaderPath() says; `name` for messages.
+  static Program build(std::vector<Stage> stages, std::string_view name);
+  using Locations = std::map<std::string, GLint, std::less<>>;
+  // `spirvLocations`: the table of a program built through SPIR-V (all its uniforms').
+  Program(GLuint id, std::string name, std::vector<std::string> declared,
+          std::optional<Locations> spirvLocations = std::nullopt);
   // location(), or the logic_error above.
   GLint checkedLocation(const char* name) const;
+  // The active uniforms as (name, location, type): the GL's names, or for SPIR-V the table's.
+  struct Active {
+    std::string name;
+    GLint location;
+    GLenum type;
+  };
+  std::vector<Active> activeUniforms() const;
 
   std::string name_;                   // the fragment or compute shader's key
   std::vector<std::string> declared_;  // uniform names of its sources, sorted
+  // SPIR-V only: name → location of the active uniforms, as the build assigned them.
+  std::optional<Locations> spirvLocations_;
   mutable std::vector<GLint> setLocations_;  // every location set() wrote, sorted
 };
 

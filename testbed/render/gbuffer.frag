@@ -1,7 +1,7 @@
 #version 450 core
-in vec3 vPosition;
-in vec3 vNormal;
-flat in vec3 vFaceNormal;
+layout(location = 0) in vec3 vPosition;
+layout(location = 1) in vec3 vNormal;
+layout(location = 2) flat in vec3 vFaceNormal;
 layout(location = 0) out vec4 outPosition;
 layout(location = 1) out vec4 outNormal;
 layout(location = 2) out vec4 outShadingNormal;

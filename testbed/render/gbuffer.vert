@@ -3,9 +3,9 @@ layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec3 inFaceNormal;
 uniform mat4 uViewProjection;
-out vec3 vPosition;
-out vec3 vNormal;
-flat out vec3 vFaceNormal;
+layout(location = 0) out vec3 vPosition;
+layout(location = 1) out vec3 vNormal;
+layout(location = 2) flat out vec3 vFaceNormal;
 void main() {
   vPosition = inPosition;
   vNormal = inNormal;
