@@ -7,9 +7,9 @@
 #include "testbed/glsl/receiver.glsl"
 #include "groundtruth/volume_face.glsl"
 
-flat in vec4 vPlane;
-flat in float vLightCap;
-flat in float vWeight;  // always 1 here: capped depth-fail volumes draw no side twice
+layout(location = 0) flat in vec4 vPlane;
+layout(location = 1) flat in float vLightCap;
+layout(location = 2) flat in float vWeight;  // always 1 here: capped depth-fail volumes draw no side twice
 uniform vec3 uCameraPosition;
 uniform float uTieTolerance;
 
