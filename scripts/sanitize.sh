@@ -45,5 +45,5 @@ export LSAN_OPTIONS="suppressions=$suppressions:print_suppressions=0${LSAN_OPTIO
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
 # Only the GoogleTest tests (named Suite.Test): the Python and browser tests run no
 # sanitized code.
-ctest --test-dir "$build_dir" --output-on-failure -j"$jobs" --timeout 1800 \
+ctest --test-dir "$build_dir" --output-on-failure -j"$jobs" \
   -R '^[A-Za-z0-9_/]+\.[A-Za-z0-9_/]+$' -E '^Docs\.|^Plugin\.ShaderMissing' "$@"
