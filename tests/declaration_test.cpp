@@ -193,5 +193,24 @@ TEST(Declarations, SweepSpecsNameOnlyDeclaredPasses) {
   EXPECT_FALSE(fs::exists(dir / "out")) << run.describe();
 }
 
+// A ground-truth row is held to the shadow volumes' declaration like any technique's.
+TEST(Declarations, GroundTruthRowsNameOnlyItsDeclaredPasses) {
+  const TempDir dir("testbed-declared-truth-passes");
+  const auto specWith = [&](const std::string& passes) {
+    return writeFile(dir / "spec.json", R"({
+    "name": "t", "citation": "test",
+    "scenes": {"wall": ")" + (fs::path(TESTBED_SOURCE_DIR) / "scenes" / "wall.json").string() + R"("},
+    "settings": {"scene": "wall", "size": "32x18"},
+    "columns": [{"label": "a", "shadow_map": 32}],
+    "rows": [{"label": "SV", "techniques": ["groundtruth"], "passes": )" + passes + "}]}");
+  };
+  EXPECT_NO_THROW(checkDeclaredPasses(loadSweepSpec(specWith(R"(["stencil-volumes", "visibility"])"))));
+  const fs::path misnamed = specWith(R"(["stencil-volume"])");
+  const auto message = inputErrorOf([&] { checkDeclaredPasses(loadSweepSpec(misnamed)); });
+  ASSERT_TRUE(message);
+  EXPECT_EQ(message->rfind(misnamed.string() + ": rows[0].passes: groundtruth declares no pass 'stencil-volume'", 0), 0u)
+      << *message;
+}
+
 }  // namespace
 }  // namespace testbed::test

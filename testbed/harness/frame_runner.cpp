@@ -87,8 +87,7 @@ FrameInputs FrameRunner::inputs() const {
 TechniqueSession::TechniqueSession(FrameRunner& runner, const RegisteredTechnique& technique,
                                    const ParameterSet& parameters)
     : runner_(runner), info_(*technique.info), id_(technique.info->id) {
-  // A declared technique times the passes of the run's path only (the ground truth
-  // declares none).
+  // A declared technique times the passes of the run's path only.
   if (!info_.passes.empty()) timer_.declarePasses(passNamesOn(info_.passes, runner.path()));
   const glm::ivec2 size = runner.settings().size;
   target_.ensure({.size = size, .color = GL_R32F});  // before the ledger: the harness's, not the technique's

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "groundtruth/shadow_volumes.h"
 #include "testbed/core/error.h"
 #include "testbed/technique/registry.h"
 
@@ -12,8 +13,8 @@ void checkDeclaredPasses(const SweepSpec& spec) {
     const SweepRow& r = spec.rows[row];
     if (!r.passes) continue;
     for (const auto& id : r.techniques) {
-      if (id == kGroundTruthId) continue;
-      const std::vector<std::string> declared = passNames(findTechnique(id).info->passes);
+      const RegisteredTechnique& technique = id == kGroundTruthId ? shadowVolumeGroundTruth() : findTechnique(id);
+      const std::vector<std::string> declared = passNames(technique.info->passes);
       if (declared.empty()) continue;  // a technique without a declaration reports its passes by rendering
       for (const auto& pass : *r.passes) {
         if (isHarnessPass(pass) || std::find(declared.begin(), declared.end(), pass) != declared.end()) continue;

@@ -8,7 +8,8 @@ namespace testbed {
 
 // Throws InputError naming the spec's file, the row's `passes` field, the technique and
 // the passes it declares when a row names a pass none of its techniques declares
-// (kHarnessPasses are every technique's; the ground truth declares none and is not checked).
+// (kHarnessPasses are every technique's; a `groundtruth` row is held to the shadow volumes'
+// declaration).
 void checkDeclaredPasses(const SweepSpec& spec);
 
 }  // namespace testbed
