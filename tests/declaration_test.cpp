@@ -24,8 +24,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // Each bundled technique on each path, with the parameters that change its passes or
-// resources: what it times is among the passes it declares for the path, and its memory
-// block passes the ledger's check (TechniqueSession::memory throws otherwise).
+// resources, at a size of powers of two and one of odd sides: what it times is among the
+// passes it declares for the path, and its memory block passes the ledger's check
+// (TechniqueSession::memory throws otherwise), its bytes following the size rules.
 TEST(Declarations, EveryTechniqueRendersWithinItsDeclarationOnBothPaths) {
   sharedContext();
   const Scene scene = bundledScene("fence");
@@ -36,26 +37,30 @@ TEST(Declarations, EveryTechniqueRendersWithinItsDeclarationOnBothPaths) {
       {"msm", {{{"storage", "32"}}}},
       {"evsm", {{{"moments", "2"}}}},
   };
-  for (const TechniquePath path : {TechniquePath::Paper, TechniquePath::Fast}) {
-    RenderSettings settings = renderSettings({64, 36}, 64);
-    settings.path = path;
-    FrameRunner runner(scene, settings);
-    for (const auto& t : registeredTechniques()) {
-      const std::vector<std::string> declared = passNamesOn(t.info->passes, path);
-      std::vector<std::map<std::string, std::string>> sets = {{}};
-      if (const auto it = variants.find(t.info->id); it != variants.end())
-        sets.insert(sets.end(), it->second.begin(), it->second.end());
-      for (const auto& set : sets) {
-        SCOPED_TRACE(t.info->id + " on the " + std::string(pathName(path)) + " path, " + std::to_string(set.size()) +
-                     " parameters set");
-        TechniqueRun run;
-        ASSERT_NO_THROW(run = runTechnique(runner, t.info->id, set));
-        EXPECT_FALSE(run.times.order.empty());
-        for (const auto& pass : run.times.order)
-          EXPECT_NE(std::find(declared.begin(), declared.end(), pass), declared.end()) << pass;
-        std::set<std::string> resources;
-        for (const auto& r : t.info->resources) resources.insert(r.name);
-        for (const auto& m : run.memory) EXPECT_TRUE(resources.count(m.name)) << m.name;
+  const std::vector<std::pair<glm::ivec2, int>> sizes = {{{64, 36}, 64}, {{61, 35}, 50}};
+  for (const auto& [size, shadowMap] : sizes) {
+    for (const TechniquePath path : {TechniquePath::Paper, TechniquePath::Fast}) {
+      RenderSettings settings = renderSettings(size, shadowMap);
+      settings.path = path;
+      FrameRunner runner(scene, settings);
+      for (const auto& t : registeredTechniques()) {
+        const std::vector<std::string> declared = passNamesOn(t.info->passes, path);
+        std::vector<std::map<std::string, std::string>> sets = {{}};
+        if (const auto it = variants.find(t.info->id); it != variants.end())
+          sets.insert(sets.end(), it->second.begin(), it->second.end());
+        for (const auto& set : sets) {
+          SCOPED_TRACE(t.info->id + " on the " + std::string(pathName(path)) + " path at " + std::to_string(size.x) +
+                       "x" + std::to_string(size.y) + " / " + std::to_string(shadowMap) + "², " +
+                       std::to_string(set.size()) + " parameters set");
+          TechniqueRun run;
+          ASSERT_NO_THROW(run = runTechnique(runner, t.info->id, set));
+          EXPECT_FALSE(run.times.order.empty());
+          for (const auto& pass : run.times.order)
+            EXPECT_NE(std::find(declared.begin(), declared.end(), pass), declared.end()) << pass;
+          std::set<std::string> resources;
+          for (const auto& r : t.info->resources) resources.insert(r.name);
+          for (const auto& m : run.memory) EXPECT_TRUE(resources.count(m.name)) << m.name;
+        }
       }
     }
   }
@@ -156,14 +161,62 @@ TEST(Declarations, TheLedgerRefusesAResourceOfAnotherRole) {
 TEST(Declarations, TheLedgerRefusesAResourceOfAnotherFormat) {
   const std::vector<ResourceDeclaration> declared = {
       {.name = "map", .formats = {GL_RG32F, kBufferFormat}, .size = SizeRule::Screen, .role = ResourceRole::Paper}};
-  EXPECT_NO_THROW(declaredMemory("t", declared, {{"map", "RG32F", ResourceRole::Paper, 8}}));
-  EXPECT_NO_THROW(declaredMemory("t", declared, {{"map", "buffer", ResourceRole::Paper, 8}}));
+  const RuleSizes onePixel{.screen = {1, 1}, .shadowMap = 1};
+  EXPECT_NO_THROW(declaredMemory("t", declared, {{"map", "RG32F", ResourceRole::Paper, 8}}, onePixel));
+  EXPECT_NO_THROW(declaredMemory("t", declared, {{"map", "buffer", ResourceRole::Paper, 8}}, onePixel));
   try {
-    declaredMemory("t", declared, {{"map", "RGBA32F", ResourceRole::Paper, 16}});
+    declaredMemory("t", declared, {{"map", "RGBA32F", ResourceRole::Paper, 16}}, onePixel);
     ADD_FAILURE() << "an undeclared format was accepted";
   } catch (const DeclarationError& e) {
     EXPECT_STREQ(e.what(), "technique 't' allocated 16 bytes of 'map' (RGBA32F, paper), declared as RG32F or buffer");
   }
+}
+
+// A planted declaration whose size rule the allocation does not follow: a screen-sized
+// texture declared as the shadow map's. The message names the bytes expected and found.
+TEST(Declarations, TheLedgerRefusesBytesOutsideTheSizeRule) {
+  const std::vector<ResourceDeclaration> declared = {
+      {.name = "map", .formats = {GL_R32F}, .size = SizeRule::ShadowMap, .role = ResourceRole::Paper}};
+  const RuleSizes sizes{.screen = {64, 36}, .shadowMap = 64};
+  EXPECT_NO_THROW(declaredMemory("t", declared, {{"map", "R32F", ResourceRole::Paper, 64 * 64 * 4}}, sizes));
+  try {
+    declaredMemory("t", declared, {{"map", "R32F", ResourceRole::Paper, 64 * 36 * 4}}, sizes);
+    ADD_FAILURE() << "a screen-sized texture passed as the shadow map's";
+  } catch (const DeclarationError& e) {
+    // 64² texels, or the full chain 64² + 32² + … + 1 = 5461, of 4 bytes.
+    EXPECT_STREQ(e.what(),
+                 "technique 't' allocated 9216 bytes of 'map' (R32F, paper), not its size rule's: expected whole "
+                 "textures of 16384 or 21844 bytes (rule 'shadow map', a 64² shadow map, a 64x36 screen, 4 bytes a "
+                 "texel), found 9216");
+  }
+}
+
+// What each rule accepts: whole textures of its sizes, rounded up where a rule divides.
+TEST(Declarations, SizeRulesAcceptWholeTexturesOfTheirSizes) {
+  const RuleSizes sizes{.screen = {61, 35}, .shadowMap = 50};
+  const auto problem = [&](SizeRule rule, GLenum format, std::uint64_t bytes, int tile = 0) {
+    return sizeRuleProblem({.name = "r", .formats = {format}, .size = rule, .tile = tile}, format, bytes, sizes);
+  };
+  EXPECT_EQ(problem(SizeRule::Screen, GL_RG32F, 3 * 61 * 35 * 8), "");  // three targets
+  EXPECT_NE(problem(SizeRule::Screen, GL_RG32F, 61 * 35 * 8 + 8), "");
+  EXPECT_NE(problem(SizeRule::Screen, GL_RG32F, 0), "");
+  EXPECT_EQ(problem(SizeRule::HalfShadowMap, GL_RGBA32F, 25 * 25 * 16), "");
+  EXPECT_EQ(problem(SizeRule::ShadowMapCorners, GL_RG16, 51 * 51 * 4), "");
+  EXPECT_NE(problem(SizeRule::ShadowMapCorners, GL_RG16, 50 * 50 * 4), "");
+  // 50² + 25² + 12² + 6² + 3² + 1²: a full mip chain.
+  EXPECT_EQ(problem(SizeRule::ShadowMap, GL_RG32F, (2500 + 625 + 144 + 36 + 9 + 1) * 8), "");
+  // Four R32F texels a row packed into one RGBA32F texel: ⌈50/4⌉ = 13 a row.
+  EXPECT_EQ(problem(SizeRule::PackedShadowMap, GL_RGBA32F, 13 * 50 * 16, 8), "");
+  EXPECT_EQ(problem(SizeRule::ScreenTiles, GL_R32UI, 2 * 4 * 3 * 4, 16), "");  // ⌈61/16⌉ × ⌈35/16⌉, twice
+  // Two row-band images (⌈61/8⌉ × 35) and one column-band image (61 × ⌈35/8⌉).
+  EXPECT_EQ(problem(SizeRule::ScreenBands, GL_RG32I, (2 * 8 * 35 + 61 * 5) * 8, 8), "");
+  EXPECT_EQ(problem(SizeRule::Scene, GL_R32F, 12), "");  // not checked
+}
+
+TEST(Declarations, ATiledRuleNeedsItsTile) {
+  EXPECT_EQ(declarationProblem({{.name = "draw", .paperStep = "a test's"}},
+                               {{.name = "tiles", .formats = {GL_R32UI}, .size = SizeRule::ScreenTiles}}),
+            "resource 'tiles' follows rule 'screen tiles' without its tile");
 }
 
 // The bundled paper specs name only declared passes; a misnamed one is refused by name,

@@ -131,8 +131,9 @@ TEST(Paths, PaperPathHoldsOnlyThePapersResources) {
               rpcf ? (std::vector<std::string>{"depth-image", "edge-marks", "rpcf-tile-bounds"})
                    : (std::vector<std::string>{"depth-image", "edge-marks"}));
     EXPECT_EQ(namesOf(f.memory, ResourceRole::Paper), std::vector<std::string>{"shadow-map"});
-    EXPECT_EQ(f.times.order, rpcf ? (std::vector<std::string>{"shadow-map", "tile-bounds", "classify", "revectorize"})
-                                  : (std::vector<std::string>{"shadow-map", "classify", "revectorize"}));
+    EXPECT_EQ(f.times.order,
+              rpcf ? (std::vector<std::string>{"shadow-map", "tile-bounds", "depth-copy", "classify", "revectorize"})
+                   : (std::vector<std::string>{"shadow-map", "depth-copy", "classify", "revectorize"}));
   }
   // smsr-2pass: plus its screen-size RGBA8 discontinuity map, and on neither path a depth
   // image (its programs read none).

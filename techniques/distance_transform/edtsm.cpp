@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "testbed/glsl/units.h"
 #include "testbed/render/receiver_inputs.h"
 #include "testbed/technique/registry.h"
 
@@ -28,8 +29,8 @@ void EdtShadowMapping::configured() {
 
 std::vector<PassDeclaration> EdtShadowMapping::declaredPasses() {
   return {ShadowMapPass::declaredPass(),
-          {.name = "rbsm-classify",
-           .paperStep = "clearing RBSM's target; on the fast path also the classifying draw and the depth image's copy"},
+          DepthImage::declaredPass(),
+          {.name = "rbsm-classify", .paperStep = "clearing RBSM's target; on the fast path also the classifying draw"},
           {.name = "rbsm", .paperStep = "RBSM's hard shadow with the camera depth (EDTSM* §3.1)"},
           {.name = "seeds", .paperStep = "the EDT's seeds (EDTSM* §3.3; reference pipeline)"},
           {.name = "edt", .paperStep = "the exact screen-space EDT and eq. 8's penumbra (EDTSM* §3.3)"},
@@ -41,8 +42,17 @@ std::vector<ResourceDeclaration> EdtShadowMapping::declaredResources() {
   return {ShadowMapPass::declaredMap(),
           {.name = "edtsm-targets", .formats = {GL_RG32F, GL_R8}, .size = SizeRule::Screen, .role = ResourceRole::Paper},
           {.name = "edt-scratch", .formats = {GL_RG32I, GL_R32I}, .size = SizeRule::Screen, .role = ResourceRole::Paper},
-          {.name = "penumbra-band", .formats = {GL_R32UI, kBufferFormat}, .size = SizeRule::ScreenTiles, .role = ResourceRole::Device},
-          {.name = "filter-tiles", .formats = {GL_R32UI, kBufferFormat}, .size = SizeRule::ScreenTiles, .role = ResourceRole::Device},
+          BandedFeatureTransformPass::declaredBands(),
+          {.name = "penumbra-band",
+           .formats = {GL_R32UI, kBufferFormat},
+           .size = SizeRule::ScreenTiles,
+           .role = ResourceRole::Device,
+           .tile = PenumbraBand::kTile},
+          {.name = "filter-tiles",
+           .formats = {GL_R32UI, kBufferFormat},
+           .size = SizeRule::ScreenTiles,
+           .role = ResourceRole::Device,
+           .tile = FilterTiles::kTile},
           DepthImage::declared(DepthImage::Layout::Blocks),
           EdgeSplitPass::declaredMarks(),
           revectorization::Common::declaredDebugView()};
@@ -69,7 +79,7 @@ void EdtShadowMapping::bindFilter(const Program& program, const FrameInputs& in)
   program.set("uScreenDistance", 0.5f * in.camera.projection[1][1]);
   program.set("uCameraPosition", glm::vec3(glm::inverse(in.camera.view)[3]));
   program.set("uMaxRadius", parameters_.maxFilterRadius);
-  program.set("uIntensity", 4);
+  program.set("uIntensity", kEdtsmInputTextureUnit);
 }
 
 void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
@@ -88,13 +98,12 @@ void EdtShadowMapping::render(const FrameInputs& in, PassTimer& timer, const Vis
   shadowMap_.render(in, timer);
   rbsm_.setPath(in.path);
   rbsmPass_.setDefines(rbsm_.libraryDefines());
+  // The shadow map as RBSM's walks read it on the fast path (testbed/render/depth_image.h).
+  rbsm_.updateDepthImage(shadowMap_.depth(), timer);
   {
     auto scope = timer.scope("rbsm-classify");
     const float noReceiver[4] = {0, -1, 0, 0};  // value 0, depth −1: later passes skip it
     glClearNamedFramebufferfv(hard_.framebuffer().id(), GL_COLOR, 0, noReceiver);
-    // The shadow map as RBSM's walks read it on the fast path
-    // (testbed/render/depth_image.h).
-    rbsm_.updateDepthImage(shadowMap_.depth());
   }
   const auto bindRbsm = [&](const Program& program) {
     bindScreenInputs(program, in);
@@ -114,8 +123,8 @@ void EdtShadowMapping::renderReference(const FrameInputs& in, PassTimer& timer, 
   {
     auto scope = timer.scope("seeds");
     bindScreenInputs(seedsProgram_, in);
-    glBindTextureUnit(4, hard_.color().id());
-    seedsProgram_.set("uHard", 4);
+    glBindTextureUnit(kEdtsmInputTextureUnit, hard_.color().id());
+    seedsProgram_.set("uHard", kEdtsmInputTextureUnit);
     screen_.draw(seedsProgram_, seeds_.framebuffer(), in.size);
   }
   {
@@ -128,10 +137,11 @@ void EdtShadowMapping::renderReference(const FrameInputs& in, PassTimer& timer, 
   {
     auto scope = timer.scope("penumbra");
     bindScreenInputs(penumbraProgram_, in);
-    glBindTextureUnit(4, hard_.color().id());
-    glBindTextureUnit(5, (bandedEdt ? bandedTransform_.nearest() : featureTransform_.nearest()).id());
-    penumbraProgram_.set("uHard", 4);
-    penumbraProgram_.set("uNearestSeed", 5);
+    glBindTextureUnit(kEdtsmInputTextureUnit, hard_.color().id());
+    const Texture& nearest = bandedEdt ? bandedTransform_.nearest() : featureTransform_.nearest();
+    glBindTextureUnit(kNearestSeedTextureUnit, nearest.id());
+    penumbraProgram_.set("uHard", kEdtsmInputTextureUnit);
+    penumbraProgram_.set("uNearestSeed", kNearestSeedTextureUnit);
     penumbraProgram_.set("uPenumbra", parameters_.penumbra);
     screen_.draw(penumbraProgram_, intensity_.framebuffer(), in.size);
   }
@@ -140,10 +150,10 @@ void EdtShadowMapping::renderReference(const FrameInputs& in, PassTimer& timer, 
     bindFilter(filterProgram_, in);
     const float noReceiver[4] = {0, -1, 0, 0};  // the first draw leaves these pixels alone
     glClearNamedFramebufferfv(filtered_.framebuffer().id(), GL_COLOR, 0, noReceiver);
-    glBindTextureUnit(4, intensity_.color().id());
+    glBindTextureUnit(kEdtsmInputTextureUnit, intensity_.color().id());
     filterProgram_.set("uDirection", glm::ivec2(1, 0));
     screen_.draw(filterProgram_, filtered_.framebuffer(), in.size);
-    glBindTextureUnit(4, filtered_.color().id());
+    glBindTextureUnit(kEdtsmInputTextureUnit, filtered_.color().id());
     filterProgram_.set("uDirection", glm::ivec2(0, 1));
     screen_.draw(filterProgram_, out.framebuffer, in.size);
   }
@@ -158,22 +168,22 @@ void EdtShadowMapping::renderFused(const FrameInputs& in, PassTimer& timer, cons
     auto scope = timer.scope("edt");
     glCopyImageSubData(hard_.color().id(), GL_TEXTURE_2D, 0, 0, 0, 0, intensity_.color().id(), GL_TEXTURE_2D, 0, 0, 0,
                        0, in.size.x, in.size.y, 1);
-    glBindTextureUnit(4, hard_.color().id());
+    glBindTextureUnit(kEdtsmInputTextureUnit, hard_.color().id());
     bindScreenInputs(seedRows_, in);
-    seedRows_.set("uHard", 4);
+    seedRows_.set("uHard", kEdtsmInputTextureUnit);
     bindScreenInputs(penumbraColumns_, in);
-    penumbraColumns_.set("uHard", 4);
+    penumbraColumns_.set("uHard", kEdtsmInputTextureUnit);
     penumbraColumns_.set("uPenumbra", parameters_.penumbra);
-    glBindImageTexture(0, intensity_.color().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
-    glBindImageTexture(4, hard_.color().id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
-    filterTiles_.begin(in.size, 1);
+    glBindImageTexture(kEdtsmOutputImageUnit, intensity_.color().id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+    glBindImageTexture(kEdtsmInputImageUnit, hard_.color().id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
+    filterTiles_.begin(in.size);
     band_.begin(in.size);
     featureTransform_.run(in.size, seedRows_, penumbraColumns_,
                           [&] { band_.findRuns(parameters_.penumbra, in.camera.projection); });
     band_.end();
-    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
-    glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-    glBindImageTexture(4, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
+    glBindImageTexture(kEdtsmOutputImageUnit, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
+    glBindImageTexture(kTileKindsImageUnit, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    glBindImageTexture(kEdtsmInputImageUnit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
   }
   {
     // The filter runs on the tiles where it can change a pixel, four pixels of a line per
@@ -188,11 +198,12 @@ void EdtShadowMapping::renderFused(const FrameInputs& in, PassTimer& timer, cons
     for (const bool columns : {false, true}) {
       const Program& program = columns ? filterColumns_ : filterRows_;
       bindFilter(program, in);
-      glBindTextureUnit(4, (columns ? filtered_ : intensity_).color().id());
-      glBindImageTexture(4, (columns ? filtered_ : intensity_).color().id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
+      const Texture& input = (columns ? filtered_ : intensity_).color();
+      glBindTextureUnit(kEdtsmInputTextureUnit, input.id());
+      glBindImageTexture(kEdtsmInputImageUnit, input.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
       filterTiles_.dispatch(program, columns ? out.texture : filtered_.color(), columns ? GL_R32F : GL_RG32F, columns);
     }
-    glBindImageTexture(4, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
+    glBindImageTexture(kEdtsmInputImageUnit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
   }
 }
 

@@ -60,7 +60,7 @@ class EdtShadowMapping : public WithParameters<EdtsmParameters> {
   void allocate(glm::ivec2 size, bool straightforward);
   // Receivers, camera depth and the edge-awareness threshold of edtsm_screen.glsl.
   void bindScreenInputs(const Program& program, const FrameInputs& in) const;
-  // The mean filter's uniforms; its input is bound at unit 4.
+  // The mean filter's uniforms; its input is bound at kEdtsmInputTextureUnit.
   void bindFilter(const Program& program, const FrameInputs& in) const;
   // What follows the seeds: the straightforward passes, or the fused, tiled ones.
   void renderReference(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out, bool bandedEdt);

@@ -11,7 +11,8 @@ uniform ivec2 uColumnReach;     // and the second's (the box both windows make)
 uniform int uListLength;        // tiles, the capacity of each list
 // (x, y, z) indirect dispatch arguments of the row list, then of the column list, then the
 // row list's tiles and the column list's, x + y · tiles.x each.
-layout(std430, binding = 0) buffer Tiles { uint tileList[]; };
+#include "testbed/glsl/units.glsl"
+layout(std430, binding = kTileListBufferBinding) buffer Tiles { uint tileList[]; };
 
 bool changes(ivec2 tile, ivec2 reach, ivec2 tiles) {
   uint kinds = 0u;

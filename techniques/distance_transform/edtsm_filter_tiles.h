@@ -22,16 +22,16 @@ class FilterTiles {
   static constexpr int kTile = 16;
 
   // Makes the kinds image (R32UI, a tile per texel: bit 0 a receiver at exactly +0, bit 1
-  // at 1, bit 2 any other value) for `size` pixels, clears it and binds it at image unit
-  // `unit` for a shader to OR into (edtsm_seeds.comp, edtsm_penumbra.comp).
-  void begin(glm::ivec2 size, GLuint unit);
+  // at 1, bit 2 any other value) for `size` pixels, clears it and binds it at
+  // kTileKindsImageUnit for a shader to OR into (edtsm_seeds.comp, edtsm_penumbra.comp).
+  void begin(glm::ivec2 size);
   // Once the kinds are complete (and made visible to texel fetches): lists the tiles with
   // a pixel whose window of `radius` pixels to each side holds more than one kind, or one
   // other than 0 and 1: along x for the row pass, in the box for the column pass.
   void findTiles(int radius);
   // Runs edtsm_mean_filter.comp (`program`, its other inputs bound) over the row pass's
-  // tiles (`columns` false) or the column pass's, writing `target` (bound at image unit 0
-  // as `format`); makes the writes visible to fetches, blits and read-backs.
+  // tiles (`columns` false) or the column pass's, writing `target` (bound at
+  // kEdtsmOutputImageUnit as `format`); makes the writes visible to fetches, blits and read-backs.
   void dispatch(const Program& program, const Texture& target, GLenum format, bool columns) const;
 
  private:

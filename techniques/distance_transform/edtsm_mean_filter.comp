@@ -10,6 +10,7 @@
 // the union of eight windows is longer, and every tap costs each window a test).
 // EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
 // shadow mapping", Computers & Graphics 71 (2018).
+#include "testbed/glsl/units.glsl"
 #include "techniques/distance_transform/edtsm_mean_filter.glsl"
 #include "techniques/distance_transform/edtsm_tiles.glsl"
 
@@ -18,17 +19,17 @@ layout(local_size_x = 16, local_size_y = 4) in;  // kTile lines, four segments e
 
 #ifdef COLUMNS
 const ivec2 kAlong = ivec2(0, 1);
-layout(r32f, binding = 0) uniform writeonly image2D uFiltered;
+layout(r32f, binding = kEdtsmOutputImageUnit) uniform writeonly image2D uFiltered;
 #else
 const ivec2 kAlong = ivec2(1, 0);
-layout(rg32f, binding = 0) uniform writeonly image2D uFiltered;
+layout(rg32f, binding = kEdtsmOutputImageUnit) uniform writeonly image2D uFiltered;
 #endif
 // uIntensity again, as an image: on llvmpipe an imageLoad costs fewer instructions than a
 // texel fetch of the same texel, and every tap of every window is one.
-layout(rg32f, binding = 4) uniform readonly image2D uIntensityImage;
+layout(rg32f, binding = kEdtsmInputImageUnit) uniform readonly image2D uIntensityImage;
 // The tiles to filter (edtsm_filter_tiles.comp): x + y · tiles.x each, after the dispatch's
 // indirect arguments.
-layout(std430, binding = 0) readonly buffer Tiles { uint tileList[]; };
+layout(std430, binding = kTileListBufferBinding) readonly buffer Tiles { uint tileList[]; };
 uniform int uListOffset;  // index of this direction's first tile
 uniform int uTileColumns;
 

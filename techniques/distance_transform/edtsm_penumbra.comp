@@ -6,13 +6,14 @@
 // the other pixels keep the hard visibility copied into uIntensity before. On the way it
 // ORs, per tile, the kinds of intensity the pixels it writes hold, for the mean filter's
 // tiles (edtsm_filter_tiles.h); the row pass ORed the hard visibility's.
+#include "testbed/glsl/units.glsl"
 #include "techniques/distance_transform/edtsm_penumbra.glsl"
 #include "techniques/distance_transform/edtsm_tiles.glsl"
 
-layout(rg32f, binding = 0) uniform writeonly image2D uIntensity;
-layout(r32ui, binding = 1) uniform uimage2D uTileKinds;
+layout(rg32f, binding = kEdtsmOutputImageUnit) uniform writeonly image2D uIntensity;
+layout(r32ui, binding = kTileKindsImageUnit) uniform uimage2D uTileKinds;
 // edtsm_penumbra_band.comp's runs: per tile column, (count, ...), then (first row, end row, R, 0).
-layout(std430, binding = 2) readonly buffer Runs { ivec4 runs[]; };
+layout(std430, binding = kPenumbraRunsBufferBinding) readonly buffer Runs { ivec4 runs[]; };
 
 uint gKinds = 0u;  // this column's kinds in the current tile
 

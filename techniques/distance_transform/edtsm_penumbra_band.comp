@@ -3,18 +3,19 @@
 // column (edtsm_penumbra_band.h): per tile, R from its least receiver depth; the tile is
 // needed when a tile with a seed lies within ceil(R / kBandTile) tiles; consecutive needed
 // tiles make one run, with the largest R of its tiles.
+#include "testbed/glsl/units.glsl"
 #include "techniques/distance_transform/edtsm_tiles.glsl"
 
 layout(local_size_x = 64) in;
 
 uniform ivec2 uSize;            // pixels
-layout(r32ui, binding = 2) uniform readonly uimage2D uTileSeeds;     // 1: the tile holds a seed
-layout(r32ui, binding = 3) uniform readonly uimage2D uTileMinDepth;  // least receiver depth, bits; ~0: none
+layout(r32ui, binding = kTileSeedsImageUnit) uniform readonly uimage2D uTileSeeds;     // 1: the tile holds a seed
+layout(r32ui, binding = kTileMinDepthImageUnit) uniform readonly uimage2D uTileMinDepth;  // least receiver depth, bits; ~0: none
 uniform float uHalfPenumbra;    // P/2 with a margin for rounding; <= 0: no penumbra anywhere
 uniform float uBandScale;       // F · k · P/2 with a margin (edtsm_penumbra_band.h)
 uniform vec2 uDepthToEye;       // (projection[3][2], projection[2][2]): Z = x / (z_ndc + y)
 // Per tile column, entry 0: (number of runs, 0, 0, 0); then (first row, end row, R, 0).
-layout(std430, binding = 2) writeonly buffer Runs { ivec4 runs[]; };
+layout(std430, binding = kPenumbraRunsBufferBinding) writeonly buffer Runs { ivec4 runs[]; };
 
 // R of a tile (edtsm_penumbra_band.h), -1 without receivers.
 int bandRadius(ivec2 tile) {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "testbed/glsl/units.h"
+
 namespace testbed::distance_transform {
 
 void PenumbraBand::begin(glm::ivec2 size) {
@@ -19,8 +21,8 @@ void PenumbraBand::begin(glm::ivec2 size) {
   const GLuint none = 0, noDepth = 0xFFFFFFFFu;
   glClearTexImage(seeds_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
   glClearTexImage(minDepth_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &noDepth);
-  glBindImageTexture(2, seeds_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-  glBindImageTexture(3, minDepth_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+  glBindImageTexture(kTileSeedsImageUnit, seeds_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+  glBindImageTexture(kTileMinDepthImageUnit, minDepth_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
 }
 
 void PenumbraBand::findRuns(float penumbra, const glm::mat4& projection) {
@@ -41,15 +43,15 @@ void PenumbraBand::findRuns(float penumbra, const glm::mat4& projection) {
   runsProgram_.set("uBandScale", scale);
   runsProgram_.set("uDepthToEye", glm::vec2(projection[3][2], projection[2][2]));
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, runs_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPenumbraRunsBufferBinding, runs_.id());
   glDispatchCompute(GLuint((tiles_.x + 63) / 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 void PenumbraBand::end() const {
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, 0);
-  glBindImageTexture(2, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-  glBindImageTexture(3, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPenumbraRunsBufferBinding, 0);
+  glBindImageTexture(kTileSeedsImageUnit, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+  glBindImageTexture(kTileMinDepthImageUnit, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
 }
 
 }  // namespace testbed::distance_transform

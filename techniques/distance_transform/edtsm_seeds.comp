@@ -5,15 +5,16 @@
 // it records, per tile, what edtsm_penumbra_band.h needs (whether the tile holds a seed,
 // its least receiver depth) and the mean filter's kinds of the hard visibility
 // (edtsm_filter_tiles.h), one atomic each per row of a tile.
+#include "testbed/glsl/units.glsl"
 #include "techniques/distance_transform/edtsm_seeds.glsl"
 #include "techniques/distance_transform/edtsm_tiles.glsl"
 
-layout(r32ui, binding = 1) uniform uimage2D uTileKinds;     // cleared to 0 before
-layout(r32ui, binding = 2) uniform uimage2D uTileSeeds;     // cleared to 0 before
-layout(r32ui, binding = 3) uniform uimage2D uTileMinDepth;  // cleared to ~0 before
+layout(r32ui, binding = kTileKindsImageUnit) uniform uimage2D uTileKinds;     // cleared to 0 before
+layout(r32ui, binding = kTileSeedsImageUnit) uniform uimage2D uTileSeeds;     // cleared to 0 before
+layout(r32ui, binding = kTileMinDepthImageUnit) uniform uimage2D uTileMinDepth;  // cleared to ~0 before
 // uHard again, as an image: on llvmpipe an imageLoad costs fewer instructions than a
 // texelFetch of the same texel, and this pass makes three a pixel.
-layout(rg32f, binding = 4) uniform readonly image2D uHardImage;
+layout(rg32f, binding = kEdtsmInputImageUnit) uniform readonly image2D uHardImage;
 
 // Columns x - 1, x and x + 1 of the window, each rows y - 1, y and y + 1.
 vec2 gBefore[3], gAt[3], gAfter[3];

@@ -3,13 +3,12 @@
 #include <string>
 
 #include "testbed/core/error.h"
+#include "testbed/glsl/units.h"
 
 namespace testbed {
 namespace {
 
 constexpr int kGroupSize = 64;  // local_size_x of both shaders
-// feature_transform_units.glsl's.
-constexpr GLuint kRowNearestUnit = 6, kEnvelopeUnit = 7;
 
 GLuint groupsFor(int invocations) { return GLuint((invocations + kGroupSize - 1) / kGroupSize); }
 
@@ -27,13 +26,13 @@ void FeatureTransformPass::run(const Texture& seeds, glm::ivec2 size) {
   if (nearest_.width() != size.x || nearest_.height() != size.y) nearest_ = Texture::create2D(GL_RG32I, size.x, size.y);
   // The seeds may have just been written by an image store.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-  glBindTextureUnit(0, seeds.id());
+  glBindTextureUnit(kEdtSeedsTextureUnit, seeds.id());
   rowsProgram_.use();
-  rowsProgram_.set("uSeeds", 0);
+  rowsProgram_.set("uSeeds", kEdtSeedsTextureUnit);
   rows(rowsProgram_);
-  glBindImageTexture(0, nearest_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32I);
+  glBindImageTexture(kEdtsmOutputImageUnit, nearest_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32I);
   columns(columnsProgram_);
-  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32I);
+  glBindImageTexture(kEdtsmOutputImageUnit, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32I);
   checkGlError("feature transform");
 }
 
@@ -63,7 +62,7 @@ void FeatureTransformPass::prepare(glm::ivec2 size) {
 void FeatureTransformPass::rows(const Program& rowsProgram) {
   rowsProgram.use();
   rowsProgram.set("uSize", size_);
-  glBindImageTexture(kRowNearestUnit, rowNearest_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32I);
+  glBindImageTexture(kRowNearestImageUnit, rowNearest_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32I);
   glDispatchCompute(groupsFor(size_.y), 1, 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
@@ -71,15 +70,15 @@ void FeatureTransformPass::rows(const Program& rowsProgram) {
 void FeatureTransformPass::columns(const Program& columnsProgram) {
   columnsProgram.use();
   columnsProgram.set("uSize", size_);
-  glBindImageTexture(kRowNearestUnit, rowNearest_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32I);
-  glBindImageTexture(kEnvelopeUnit, envelope_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32I);
+  glBindImageTexture(kRowNearestImageUnit, rowNearest_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32I);
+  glBindImageTexture(kEnvelopeImageUnit, envelope_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32I);
   glDispatchCompute(groupsFor(size_.x), 1, 1);
   // Whatever reads the result next: a texel fetch, an image load, a copy, a blit or a
   // read-back.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                   GL_FRAMEBUFFER_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
-  glBindImageTexture(kRowNearestUnit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32I);
-  glBindImageTexture(kEnvelopeUnit, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32I);
+  glBindImageTexture(kRowNearestImageUnit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32I);
+  glBindImageTexture(kEnvelopeImageUnit, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32I);
 }
 
 std::vector<glm::ivec2> FeatureTransformPass::readNearest() const {

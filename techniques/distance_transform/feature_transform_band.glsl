@@ -1,5 +1,5 @@
 // The banded feature transform's shared declarations (feature_transform_banded.h): its
-// images' units and the parabola arithmetic of phases 2 and 3.
+// images' units (testbed/glsl/units.glsl) and the parabola arithmetic of phases 2 and 3.
 //
 // A column's sites are its rows holding a seed; site i stands for the parabola
 // f_i(y) = (y - i)² + g_i², g_i the column distance to row i's nearest seed (phase 1). For
@@ -13,13 +13,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 uniform ivec2 uSize;  // pixels
 uniform int uBand;    // pixels a band: columns in phase 1, rows in phases 2 and 3
 
-const int kBandSeedsUnit = 1;  // RG32I (bands, rows): per row band, its (first, last) seed column; -1: none
-const int kBandCarryUnit = 2;  // RG32I (bands, rows): (last seed column left of the band, first right of it)
-const int kRowNearestUnit = 3; // R32I, a texel a pixel: the nearest seed column in the row, -1 if none
-const int kLinksUnit = 4;      // RG32I, a texel a pixel: a site's (previous, next) site; kNotSite: none
-const int kBandEndsUnit = 5;   // RG32I (columns, bands): a band's (or merged group's) first and last site
-const int kBandStartUnit = 6;  // R32I (columns, bands): the site winning a band's first row; -1: none
-const int kNearestUnit = 0;    // RG32I, a texel a pixel: the output
+#include "testbed/glsl/units.glsl"
 
 const int kNotSite = -2;  // in both links: a row without a seed, or a site out of the envelope
 

@@ -14,11 +14,11 @@
 // STEP 4: each band colours its rows from that site on, moving along the list.
 #include "techniques/distance_transform/feature_transform_band.glsl"
 
-layout(r32i, binding = kRowNearestUnit) uniform readonly iimage2D uRowNearest;
-layout(rg32i, binding = kLinksUnit) uniform iimage2D uLinks;
-layout(rg32i, binding = kBandEndsUnit) uniform iimage2D uBandEnds;
-layout(r32i, binding = kBandStartUnit) uniform iimage2D uBandStart;
-layout(rg32i, binding = kNearestUnit) uniform writeonly iimage2D uNearest;
+layout(r32i, binding = kBandRowNearestImageUnit) uniform readonly iimage2D uRowNearest;
+layout(rg32i, binding = kLinksImageUnit) uniform iimage2D uLinks;
+layout(rg32i, binding = kBandEndsImageUnit) uniform iimage2D uBandEnds;
+layout(r32i, binding = kBandStartImageUnit) uniform iimage2D uBandStart;
+layout(rg32i, binding = kEdtsmOutputImageUnit) uniform writeonly iimage2D uNearest;
 uniform int uGroup;  // STEP 2: bands a group
 
 int gColumn;

@@ -8,9 +8,9 @@
 #include "techniques/distance_transform/feature_transform_band.glsl"
 
 uniform sampler2D uSeeds;  // a seed where red > 0.5
-layout(rg32i, binding = kBandSeedsUnit) uniform iimage2D uBandSeeds;
-layout(rg32i, binding = kBandCarryUnit) uniform iimage2D uBandCarry;
-layout(r32i, binding = kRowNearestUnit) uniform iimage2D uRowNearest;
+layout(rg32i, binding = kBandSeedsImageUnit) uniform iimage2D uBandSeeds;
+layout(rg32i, binding = kBandCarryImageUnit) uniform iimage2D uBandCarry;
+layout(r32i, binding = kBandRowNearestImageUnit) uniform iimage2D uRowNearest;
 
 bool isSeed(int x, int y) { return texelFetch(uSeeds, ivec2(x, y), 0).r > 0.5; }
 

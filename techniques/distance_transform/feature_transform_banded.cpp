@@ -1,15 +1,14 @@
 #include "techniques/distance_transform/feature_transform_banded.h"
 
 #include <string>
+#include <utility>
 
 #include "testbed/core/error.h"
+#include "testbed/glsl/units.h"
 
 namespace testbed {
 namespace {
 
-// feature_transform_band.glsl's units.
-constexpr GLuint kNearestUnit = 0, kBandSeedsUnit = 1, kBandCarryUnit = 2, kBandedRowNearestUnit = 3, kLinksUnit = 4,
-                 kBandEndsUnit = 5, kBandStartUnit = 6;
 constexpr int kGroupSide = 8;  // local_size_x and _y
 
 GLuint groupsOfSide(int invocations) { return GLuint((invocations + kGroupSide - 1) / kGroupSide); }
@@ -19,16 +18,20 @@ Program stepProgram(const char* key, int step) {
   return Program::compute(key, "#define STEP " + std::to_string(step) + "\n");
 }
 
-void bindImage(GLuint unit, const Texture& texture, GLenum format) {
-  glBindImageTexture(unit, texture.id(), 0, GL_FALSE, 0, GL_READ_WRITE, format);
-}
-
 }  // namespace
 
 BandedFeatureTransformPass::BandedFeatureTransformPass(int bandPixels) : band_(bandPixels) {
   if (bandPixels < 1 || bandPixels > kMaxExtent)
     throw GlError("banded feature transform: " + std::to_string(bandPixels) + " pixels a band, out of range (1 to " +
                   std::to_string(kMaxExtent) + ")");
+}
+
+ResourceDeclaration BandedFeatureTransformPass::declaredBands(int bandPixels) {
+  return {.name = "edt-bands",
+          .formats = {GL_RG32I, GL_R32I},
+          .size = SizeRule::ScreenBands,
+          .role = ResourceRole::Paper,
+          .tile = bandPixels};
 }
 
 void BandedFeatureTransformPass::run(const Texture& seeds, glm::ivec2 size, const std::function<void(int)>& afterPhase) {
@@ -46,13 +49,13 @@ void BandedFeatureTransformPass::run(const Texture& seeds, glm::ivec2 size, cons
     starts_ = stepProgram(columns, 3);
     colour_ = stepProgram(columns, 4);
   }
-  bindImage(kNearestUnit, nearest_, GL_RG32I);
-  bindImage(kBandSeedsUnit, bandSeedsImage_, GL_RG32I);
-  bindImage(kBandCarryUnit, bandCarry_, GL_RG32I);
-  bindImage(kBandedRowNearestUnit, rowNearest_, GL_R32I);
-  bindImage(kLinksUnit, links_, GL_RG32I);
-  bindImage(kBandEndsUnit, bandEnds_, GL_RG32I);
-  bindImage(kBandStartUnit, bandStart_, GL_R32I);
+  const std::pair<int, const Texture*> images[] = {
+      {kEdtsmOutputImageUnit, &nearest_},     {kBandSeedsImageUnit, &bandSeedsImage_},
+      {kBandCarryImageUnit, &bandCarry_},     {kBandRowNearestImageUnit, &rowNearest_},
+      {kLinksImageUnit, &links_},             {kBandEndsImageUnit, &bandEnds_},
+      {kBandStartImageUnit, &bandStart_}};
+  for (const auto& [unit, texture] : images)
+    glBindImageTexture(GLuint(unit), texture->id(), 0, GL_FALSE, 0, GL_READ_WRITE, texture->internalFormat());
   const auto done = [&](int phase) {
     if (afterPhase) afterPhase(phase);
   };
@@ -62,8 +65,7 @@ void BandedFeatureTransformPass::run(const Texture& seeds, glm::ivec2 size, cons
   done(2);
   phase3();
   done(3);
-  for (GLuint unit = kNearestUnit; unit <= kBandStartUnit; ++unit)
-    glBindImageTexture(unit, 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32I);
+  for (const auto& image : images) glBindImageTexture(GLuint(image.first), 0, 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32I);
   checkGlError("banded feature transform");
 }
 
@@ -74,12 +76,15 @@ void BandedFeatureTransformPass::prepare(glm::ivec2 size) {
   if (size == size_) return;
   // Allocated here, not at construction, so they are booked in the ledger current while
   // the technique renders.
-  GpuMemoryLedger::Label label("edt-scratch", ResourceRole::Paper);
   rowBands_ = {bandsOf(size.x, band_), size.y};
   columnBands_ = {size.x, bandsOf(size.y, band_)};
-  nearest_ = Texture::create2D(GL_RG32I, size.x, size.y);
-  rowNearest_ = Texture::create2D(GL_R32I, size.x, size.y);
-  links_ = Texture::create2D(GL_RG32I, size.x, size.y);
+  {
+    GpuMemoryLedger::Label label("edt-scratch", ResourceRole::Paper);
+    nearest_ = Texture::create2D(GL_RG32I, size.x, size.y);
+    rowNearest_ = Texture::create2D(GL_R32I, size.x, size.y);
+    links_ = Texture::create2D(GL_RG32I, size.x, size.y);
+  }
+  auto label = allocating(declaredBands(band_));
   bandSeedsImage_ = Texture::create2D(GL_RG32I, rowBands_.x, rowBands_.y);
   bandCarry_ = Texture::create2D(GL_RG32I, rowBands_.x, rowBands_.y);
   bandEnds_ = Texture::create2D(GL_RG32I, columnBands_.x, columnBands_.y);
@@ -98,10 +103,10 @@ void BandedFeatureTransformPass::dispatch(const Program& program, int x, int y) 
 void BandedFeatureTransformPass::phase1(const Texture& seeds) {
   // The seeds may have just been written by an image store.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
-  glBindTextureUnit(0, seeds.id());
+  glBindTextureUnit(kEdtSeedsTextureUnit, seeds.id());
   for (const Program* p : {&bandSeeds_, &carry_, &rowSweep_}) {
     p->use();
-    p->set("uSeeds", 0);
+    p->set("uSeeds", kEdtSeedsTextureUnit);
   }
   dispatch(bandSeeds_, rowBands_.x, rowBands_.y);
   // One invocation a row, 64 rows a group.

@@ -21,6 +21,7 @@
 #include <glm/glm.hpp>
 
 #include "testbed/gl/objects.h"
+#include "testbed/technique/declaration.h"
 
 namespace testbed {
 
@@ -32,6 +33,9 @@ class BandedFeatureTransformPass {
   // `bandPixels`: pixels a band in every phase (1 to the image's side; the result does not
   // depend on it).
   explicit BandedFeatureTransformPass(int bandPixels = kDefaultBand);
+  // Its per-band images, booked under this (its per-pixel ones under "edt-scratch", as
+  // FeatureTransformPass's).
+  static ResourceDeclaration declaredBands(int bandPixels = kDefaultBand);
   // As FeatureTransformPass::run(seeds, size). `afterPhase`, if set, is called with 1, 2 and
   // 3 after each phase's dispatches (to count each phase's work).
   void run(const Texture& seeds, glm::ivec2 size, const std::function<void(int phase)>& afterPhase = {});

@@ -1,6 +1,7 @@
 #version 450 core
 // Feature transform, pass 2 (feature_transform_envelope.glsl) into the nearest-seed image.
-layout(rg32i, binding = 0) uniform writeonly iimage2D uNearest;
+#include "testbed/glsl/units.glsl"
+layout(rg32i, binding = kEdtsmOutputImageUnit) uniform writeonly iimage2D uNearest;
 
 const int kColumnSpan = 1 << 30;  // no per-span work
 void featureTransformStore(ivec2 pixel, ivec2 seed) { imageStore(uNearest, pixel, ivec4(seed, 0, 0)); }

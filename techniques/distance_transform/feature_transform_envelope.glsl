@@ -17,16 +17,16 @@
 // (per-span work out of the per-pixel loop, as feature_transform_row_sweep.glsl's hooks);
 // its main() calls featureTransformColumn(), or sets gColumn and calls
 // featureTransformColumnRange() (a band of rows, below).
-#include "techniques/distance_transform/feature_transform_units.glsl"
+#include "testbed/glsl/units.glsl"
 
 layout(local_size_x = 64) in;
 
 uniform ivec2 uSize;
 int gColumn;  // this invocation's column
-layout(r32i, binding = kRowNearestUnit) uniform readonly iimage2D uRowNearest;
+layout(r32i, binding = kRowNearestImageUnit) uniform readonly iimage2D uRowNearest;
 // Per column, a stack of (row i of a parabola, first row where it is the minimum); entry k
 // of column x at texel (x, k). Images, not buffers, as in pass 1.
-layout(rg32i, binding = kEnvelopeUnit) uniform iimage2D uEnvelope;
+layout(rg32i, binding = kEnvelopeImageUnit) uniform iimage2D uEnvelope;
 
 ivec2 envelopeAt(int k) { return imageLoad(uEnvelope, ivec2(gColumn, k)).xy; }
 void setEnvelope(int k, ivec2 e) { imageStore(uEnvelope, ivec2(gColumn, k), ivec4(e, 0, 0)); }

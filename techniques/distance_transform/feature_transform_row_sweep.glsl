@@ -12,14 +12,14 @@
 // and its main() calls featureTransformRow(). The hooks let a shader keep per-row work out
 // of the per-pixel loop: llvmpipe runs a branch's body for all 8 lanes of a vector, taken
 // or not, so work behind an `if` in the loop is paid at every pixel.
-#include "techniques/distance_transform/feature_transform_units.glsl"
+#include "testbed/glsl/units.glsl"
 
 layout(local_size_x = 64) in;
 
 uniform ivec2 uSize;
 // An image, not a buffer: llvmpipe stores to an image for about half the instructions of
 // a store to a buffer (feature_transform.h).
-layout(r32i, binding = kRowNearestUnit) uniform iimage2D uRowNearest;
+layout(r32i, binding = kRowNearestImageUnit) uniform iimage2D uRowNearest;
 
 void featureTransformRow() {
   const int y = int(gl_GlobalInvocationID.x);

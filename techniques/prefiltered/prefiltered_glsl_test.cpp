@@ -15,6 +15,7 @@
 #include "techniques/prefiltered/moments_pass.h"
 #include "testbed/gl/objects.h"
 #include "testbed/gl/render_target.h"
+#include "testbed/glsl/units.h"
 #include "testbed/render/screen_pass.h"
 #include "tests/gl_fixture.h"
 
@@ -40,10 +41,10 @@ std::vector<glm::vec4> probe(const std::string& expression, const std::vector<gl
   target.finish({0});
   const Program program = Program::graphics("testbed/render/fullscreen.vert", "techniques/prefiltered/moments_probe.frag",
                                             "#define PROBE(a, b) (" + expression + ")\n");
-  glBindTextureUnit(0, inputA.id());
-  glBindTextureUnit(1, inputB.id());
-  program.set("uA", 0);
-  program.set("uB", 1);
+  glBindTextureUnit(kProbeATextureUnit, inputA.id());
+  glBindTextureUnit(kProbeBTextureUnit, inputB.id());
+  program.set("uA", kProbeATextureUnit);
+  program.set("uB", kProbeBTextureUnit);
   ScreenPass screen;
   screen.draw(program, target, {n, 1});
   const std::vector<float> raw = output.readFloats(4);
@@ -354,8 +355,8 @@ TEST(BlurGlsl, WidestKernelSpreadsAnImpulseIntoItsWeights) {
                                              "\n#define BLUR_STEP ivec2(1, 0)\n#define BLUR_STEP_COLUMNS 0\n"
                                              "#define BLUR_PACK 1\n#define BLUR_LAYERS 1\n");
   rows.set("uWeights", weights);
-  rows.set("uSource", 0);
-  glBindTextureUnit(0, source.id());
+  rows.set("uSource", kBlurSourceTextureUnit);
+  glBindTextureUnit(kBlurSourceTextureUnit, source.id());
   ScreenPass().draw(rows, target.framebuffer(), {n, n});
   const std::vector<float> out = target.color().readFloats(4);
   for (int y = 0; y < n; ++y)

@@ -1,5 +1,6 @@
 #include "techniques/prefiltered/prefiltered_technique.h"
 
+#include "testbed/glsl/units.h"
 #include "testbed/render/receiver_inputs.h"
 
 namespace testbed {
@@ -16,7 +17,11 @@ std::vector<ResourceDeclaration> prefilteredResources(const std::vector<GLenum>&
   std::vector<GLenum> scratch = momentFormats;
   scratch.push_back(GL_RGBA32F);  // narrow formats packed four texels to one (separable_blur.h)
   return {{.name = "moment-map", .formats = map, .size = SizeRule::ShadowMap, .role = ResourceRole::Paper},
-          {.name = "blur-scratch", .formats = scratch, .size = SizeRule::ShadowMap, .role = ResourceRole::Paper}};
+          {.name = "blur-scratch",
+           .formats = scratch,
+           .size = SizeRule::PackedShadowMap,
+           .role = ResourceRole::Paper,
+           .tile = SeparableBlur::kLayers}};
 }
 
 void PrefilteredBase::configureMoments(const MomentsPass::Parameters& moments) { moments_.configure(moments); }
@@ -35,8 +40,8 @@ void PrefilteredBase::render(const FrameInputs& in, PassTimer& timer, const Visi
 
   auto scope = timer.scope("visibility");
   bindReceiverInputs(visibility_, in);
-  glBindTextureUnit(2, moments_.moments().id());
-  visibility_.set("uMoments", 2);
+  glBindTextureUnit(kMomentMapTextureUnit, moments_.moments().id());
+  visibility_.set("uMoments", kMomentMapTextureUnit);
   visibility_.set("uParams", params_);
   screen_.draw(visibility_, out.framebuffer, in.size);
 }

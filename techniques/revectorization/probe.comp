@@ -11,8 +11,9 @@ layout(local_size_x = 64) in;
 #include "techniques/revectorization/rpcf_smsr.glsl"
 #include "techniques/revectorization/rpcf_rsmss.glsl"
 
-layout(std430, binding = 0) readonly buffer Samples { vec4 samples[]; };  // xy uv, z depth
-layout(std430, binding = 1) writeonly buffer Results { float results[]; };
+#include "testbed/glsl/units.glsl"
+layout(std430, binding = kProbeInputBufferBinding) readonly buffer Samples { vec4 samples[]; };  // xy uv, z depth
+layout(std430, binding = kProbeOutputBufferBinding) writeonly buffer Results { float results[]; };
 uniform int uFunction;
 uniform int uCount;
 uniform int uRow;

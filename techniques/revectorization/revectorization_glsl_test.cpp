@@ -14,10 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "testbed/render/depth_image.h"
 #include "techniques/revectorization/rpcf_tiles.h"
 #include "testbed/gl/objects.h"
 #include "testbed/gl/pass_timer.h"
+#include "testbed/glsl/units.h"
+#include "testbed/render/depth_image.h"
 #include "tests/gl_fixture.h"
 
 namespace testbed {
@@ -81,10 +82,14 @@ class Probe {
       timer.resolve();
       tiles_->bind(program_);
     }
-    depthImage_->update(map_);  // what rvStoredDepth reads
+    {
+      PassTimer timer;
+      depthImage_->update(map_, timer);  // what rvStoredDepth reads
+      timer.resolve();
+    }
     program_.use();
-    glBindTextureUnit(2, map_.id());
-    program_.set("uShadowMap", 2);
+    glBindTextureUnit(kShadowMapTextureUnit, map_.id());
+    program_.set("uShadowMap", kShadowMapTextureUnit);
     program_.set("uShadowMapSize", glm::ivec2(size_));
     program_.set("uMaxSearch", o.maxSearch);
     program_.set("uEpsilon", 2.5e-5f);
@@ -94,8 +99,8 @@ class Probe {
     program_.set("uRow", o.row);
     program_.set("uFunction", int(function));
     program_.set("uCount", int(samples.size()));
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kProbeInputBufferBinding, in.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kProbeOutputBufferBinding, out.id());
     glDispatchCompute(GLuint((samples.size() + 63) / 64), 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<float> result(samples.size());

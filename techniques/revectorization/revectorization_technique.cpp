@@ -12,7 +12,7 @@ void reflectKernel(ParameterBinder& b, int& kernel) {
 }
 
 std::vector<PassDeclaration> singlePassPasses(std::string paperStep) {
-  return {ShadowMapPass::declaredPass(), EdgeSplitPass::classifyingDraw("classify"),
+  return {ShadowMapPass::declaredPass(), DepthImage::declaredPass(), EdgeSplitPass::classifyingDraw("classify"),
           {.name = "revectorize", .paperStep = std::move(paperStep)}};
 }
 
@@ -32,9 +32,7 @@ void SinglePassBase::render(const FrameInputs& in, PassTimer& timer, const Visib
   const bool fast = in.path == TechniquePath::Fast;
   if (fast) {
     renderFastInputs(in, shadowMap_.depth(), timer);
-    // Part of the classification's input (depth_image.h), timed with it.
-    auto scope = timer.scope("classify");
-    common_.updateDepthImage(shadowMap_.depth());
+    common_.updateDepthImage(shadowMap_.depth(), timer);
   }
   const auto bind = [&](const Program& program) {
     bindReceiverInputs(program, in);

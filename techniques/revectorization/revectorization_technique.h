@@ -20,15 +20,15 @@ namespace testbed::revectorization {
 void reflectKernel(ParameterBinder& b, int& kernel);
 
 // What a SinglePassTechnique declares (declaration.h): the shadow map, the fast path's
-// classification (with the depth image's copy), and "revectorize", implementing
+// depth image copy and classification, and "revectorize", implementing
 // `paperStep`; its resources: the shadow map, the fast path's depth image laid out as
 // `fastLayout` and edge marks, and the debug view.
 std::vector<PassDeclaration> singlePassPasses(std::string paperStep);
 std::vector<ResourceDeclaration> singlePassResources(DepthImage::Layout fastLayout = DepthImage::Layout::Blocks);
 
 // The passes of a technique made of the shared shadow map and one screen pass
-// (edge_split_pass.h): on the fast path timed "classify" (every pixel, with the depth
-// image's copy) and "revectorize" (the edge pixels), on the paper path "revectorize" alone.
+// (edge_split_pass.h): on the fast path timed "depth-copy" (depth_image.h), "classify"
+// (every pixel) and "revectorize" (the edge pixels), on the paper path "revectorize" alone.
 class SinglePassBase : public ShadowTechnique {
  public:
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) final;

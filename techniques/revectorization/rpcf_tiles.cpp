@@ -2,13 +2,10 @@
 
 #include <string>
 
+#include "testbed/glsl/units.h"
 #include "testbed/render/shadow_map_pass.h"
 
 namespace testbed::revectorization {
-
-namespace {
-constexpr int kTilesUnit = 3;
-}
 
 PassDeclaration RpcfTiles::declaredPass() {
   return {.name = "tile-bounds",
@@ -35,8 +32,8 @@ void RpcfTiles::render(const Texture& shadowMap, int kernel, PassTimer& timer) {
 }
 
 void RpcfTiles::bind(const Program& program) const {
-  glBindTextureUnit(kTilesUnit, target_.color().id());
-  program.set("uRpcfTiles", kTilesUnit);
+  glBindTextureUnit(kRpcfTileBoundsTextureUnit, target_.color().id());
+  program.set("uRpcfTiles", kRpcfTileBoundsTextureUnit);
 }
 
 }  // namespace testbed::revectorization

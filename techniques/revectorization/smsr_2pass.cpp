@@ -11,6 +11,7 @@
 // b = 1 − s), debug=onds what that search measured.
 // GI 2016: Macedo & Apolinário, "Revectorization-Based Shadow Mapping", Graphics Interface 2016.
 #include "techniques/revectorization/revectorization_technique.h"
+#include "testbed/glsl/units.h"
 #include "testbed/render/gbuffer_pass.h"
 #include "testbed/render/gpu_scene.h"
 #include "testbed/render/receiver_inputs.h"
@@ -70,8 +71,8 @@ class SmsrTwoPass final : public WithParameters<CommonParameters> {
   void bindSearchInputs(const Program& program, const FrameInputs& in) const {
     bindReceiverInputs(program, in);
     common_.bindLibrary(program, shadowMap_.depth());
-    glBindTextureUnit(3, disc_.color().id());
-    program.set("uDiscontinuityMap", 3);
+    glBindTextureUnit(kDiscontinuityMapTextureUnit, disc_.color().id());
+    program.set("uDiscontinuityMap", kDiscontinuityMapTextureUnit);
   }
 
   // The scene from the camera, as the G-buffer pass draws it (its vertex shader and state),

@@ -3,8 +3,9 @@
 // gathered corner tests and the reference's, side by side.
 #include "techniques/silhouette_map/silhouette_corners.glsl"
 layout(local_size_x = 1) in;
-layout(std430, binding = 0) readonly buffer Cases { vec4 cases[]; };
-layout(std430, binding = 1) writeonly buffer Results { vec4 results[]; };  // 2 a case
+#include "testbed/glsl/units.glsl"
+layout(std430, binding = kProbeInputBufferBinding) readonly buffer Cases { vec4 cases[]; };
+layout(std430, binding = kProbeOutputBufferBinding) writeonly buffer Results { vec4 results[]; };  // 2 a case
 
 void main() {
   uint i = gl_GlobalInvocationID.x;

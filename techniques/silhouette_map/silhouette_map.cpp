@@ -8,12 +8,13 @@
 #include <array>
 #include <vector>
 
-#include "testbed/scene/mesh_topology.h"
-#include "testbed/render/edge_split_pass.h"
 #include "techniques/silhouette_map/silhouette_edges.h"
 #include "testbed/gl/render_target.h"
+#include "testbed/glsl/units.h"
+#include "testbed/render/edge_split_pass.h"
 #include "testbed/render/receiver_inputs.h"
 #include "testbed/render/shadow_map_pass.h"
+#include "testbed/scene/mesh_topology.h"
 #include "testbed/technique/registry.h"
 #include "testbed/technique/technique.h"
 #include "testbed/technique/with_parameters.h"
@@ -44,7 +45,10 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
   // In the order the allocations above index them.
   static std::vector<ResourceDeclaration> declaredResources() {
     return {ShadowMapPass::declaredMap(),
-            {.name = "silhouette-map", .formats = {GL_RG16}, .size = SizeRule::ShadowMap, .role = ResourceRole::Paper},
+            {.name = "silhouette-map",
+             .formats = {GL_RG16},
+             .size = SizeRule::ShadowMapCorners,
+             .role = ResourceRole::Paper},
             {.name = "silhouette-edges", .formats = {kBufferFormat}, .size = SizeRule::Scene, .role = ResourceRole::Paper},
             // the vertex cache's: each edge's quad drawn from four shared vertices
             {.name = "quad-indices", .formats = {kBufferFormat}, .size = SizeRule::Scene, .role = ResourceRole::Device},
@@ -61,8 +65,8 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
     const auto bind = [&](const Program& program) {
       bindReceiverInputs(program, in);
       bindShadowMap(program, shadowMap_.depth());
-      glBindTextureUnit(3, silhouettes_.color().id());
-      program.set("uSilhouetteMap", 3);
+      glBindTextureUnit(kSilhouetteMapTextureUnit, silhouettes_.color().id());
+      program.set("uSilhouetteMap", kSilhouetteMapTextureUnit);
       program.set("uBias", parameters_.bias);
     };
     visibility_.draw(in, out, timer, bind, "visibility", "silhouette-pixels");
@@ -116,9 +120,9 @@ class SilhouetteMap final : public WithParameters<SilhouetteMapParameters> {
     edgeProgram_.set("uMapSize", static_cast<float>(in.shadowMapSize));
     edgeProgram_.set("uOcclusionBias", parameters_.occlusionBias);
     bindShadowMap(edgeProgram_, shadowMap_.depth());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, edgeBuffer_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSilhouetteEdgesBufferBinding, edgeBuffer_.id());
     drawQuads(edges);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSilhouetteEdgesBufferBinding, 0);
   }
 
   // Two triangles per edge over its quad's four corners (vertices 4e … 4e + 3), indexed so

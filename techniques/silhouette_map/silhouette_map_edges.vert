@@ -9,7 +9,8 @@
 // centres 0.04 texels clear of the quad's edges, where the rasterizer's rule could drop
 // them, and shades a quarter (long edges) to a third (short ones) fewer fragments than a
 // margin of 1.
-layout(std430, binding = 0) readonly buffer Edges { vec4 endpoints[]; };
+#include "testbed/glsl/units.glsl"
+layout(std430, binding = kSilhouetteEdgesBufferBinding) readonly buffer Edges { vec4 endpoints[]; };
 uniform mat4 uLightViewProjection;
 uniform float uMapSize;  // N, the depth map's side
 layout(location = 0) flat out vec3 vA;       // silhouette-space xy, light depth z (as the depth map stores it)

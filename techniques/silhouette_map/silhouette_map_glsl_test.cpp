@@ -12,6 +12,7 @@
 #include "techniques/silhouette_map/silhouette_edges.h"
 #include "testbed/gl/depth_format.h"
 #include "testbed/gl/objects.h"
+#include "testbed/glsl/units.h"
 #include "testbed/render/shadow_map_pass.h"
 #include "testbed/scene/primitives.h"
 #include "tests/gl_fixture.h"
@@ -28,8 +29,8 @@ std::vector<glm::vec4> probe(int mode, const std::vector<glm::vec4>& cases) {
   Buffer out = Buffer::create(n * sizeof(glm::vec4), nullptr);
   program.use();
   program.set("uMode", mode);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kProbeInputBufferBinding, in.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kProbeOutputBufferBinding, out.id());
   glDispatchCompute(static_cast<GLuint>(n), 1, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<glm::vec4> results(n);
@@ -133,8 +134,8 @@ TEST(SilhouetteMapGlsl, GatheredCornerTestsEqualFourLookups) {
     Buffer out = Buffer::create(2 * cases.size() * sizeof(glm::vec4), nullptr);
     program.use();
     bindShadowMap(program, map);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kProbeInputBufferBinding, in.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kProbeOutputBufferBinding, out.id());
     glDispatchCompute(static_cast<GLuint>(cases.size()), 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<glm::vec4> results(2 * cases.size());

@@ -3,8 +3,9 @@
 // mode 1 quadrantCorner on (c, right, up, left, down, f) sets; one case per invocation.
 #include "techniques/silhouette_map/silhouette_map.glsl"
 layout(local_size_x = 1) in;
-layout(std430, binding = 0) readonly buffer Cases { vec4 cases[]; };  // 3 vec4 a case
-layout(std430, binding = 1) writeonly buffer Results { vec4 results[]; };
+#include "testbed/glsl/units.glsl"
+layout(std430, binding = kProbeInputBufferBinding) readonly buffer Cases { vec4 cases[]; };  // 3 vec4 a case
+layout(std430, binding = kProbeOutputBufferBinding) writeonly buffer Results { vec4 results[]; };
 uniform int uMode;
 
 void main() {

@@ -128,7 +128,9 @@ PassTimes TechniqueSession::shadeFrame() {
 
 std::vector<GpuMemoryLedger::Resource> TechniqueSession::memory() const {
   if (info_.passes.empty()) return ledger_.resources();
-  return declaredMemory(id_, info_.resources, ledger_.resources());
+  const RenderSettings& settings = runner_.settings();
+  return declaredMemory(id_, info_.resources, ledger_.resources(),
+                        {.screen = settings.size, .shadowMap = settings.shadowMapSize});
 }
 
 ImageF TechniqueSession::visibility() const {

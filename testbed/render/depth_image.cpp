@@ -1,16 +1,16 @@
 #include "testbed/render/depth_image.h"
 
+#include "testbed/glsl/units.h"
+
 namespace testbed {
 
 std::string DepthImage::defines() const {
-  // The unit, written once here for C++ and GLSL alike.
-  const std::string unit = "#define RV_DEPTH_IMAGE_UNIT " + std::to_string(kUnit) + "\n";
   switch (layout_) {
-    case Layout::Texture: return unit + "#define RV_DEPTH_TEXTURE 1\n";
-    case Layout::Texels: return unit + "#define RV_DEPTH_TEXELS 1\n";
+    case Layout::Texture: return "#define RV_DEPTH_TEXTURE 1\n";
+    case Layout::Texels: return "#define RV_DEPTH_TEXELS 1\n";
     case Layout::Blocks: break;
   }
-  return unit;
+  return "#define RV_DEPTH_BLOCKS 1\n";
 }
 
 ResourceDeclaration DepthImage::declared(Layout layout) {
@@ -21,7 +21,13 @@ ResourceDeclaration DepthImage::declared(Layout layout) {
           .role = ResourceRole::Device};
 }
 
-void DepthImage::update(const Texture& shadowMap) {
+PassDeclaration DepthImage::declaredPass() {
+  return {.name = "depth-copy",
+          .paperStep = "device: copies the shadow map's depths into the image the walks load one at a time",
+          .only = TechniquePath::Fast};
+}
+
+void DepthImage::update(const Texture& shadowMap, PassTimer& timer) {
   if (layout_ == Layout::Texture) {
     image_ = RenderTarget();
     return;
@@ -37,9 +43,10 @@ void DepthImage::update(const Texture& shadowMap) {
     auto label = allocating(declared(layout_));
     image_.ensure({.size = size, .color = GLenum(texels ? GL_R32F : GL_RGBA32F)});
   }
-  glBindTextureUnit(0, shadowMap.id());
+  auto scope = timer.scope(declaredPass().name);
+  glBindTextureUnit(kShadowMapTextureUnit, shadowMap.id());
   copy_.use();
-  copy_.set("uShadowMap", 0);
+  copy_.set("uShadowMap", kShadowMapTextureUnit);
   // Image loads see a draw's framebuffer writes without a barrier (those order shader
   // stores only).
   screen_.draw(copy_, image_.framebuffer(), size);
@@ -48,7 +55,7 @@ void DepthImage::update(const Texture& shadowMap) {
 
 void DepthImage::bind() const {
   if (layout_ == Layout::Texture) return;
-  glBindImageTexture(kUnit, image_.color().id(), 0, GL_FALSE, 0, GL_READ_ONLY,
+  glBindImageTexture(kDepthImageUnit, image_.color().id(), 0, GL_FALSE, 0, GL_READ_ONLY,
                      layout_ == Layout::Texels ? GL_R32F : GL_RGBA32F);
 }
 

@@ -6,8 +6,8 @@
 // texture (the edge pass of rpcf-smsr on fence: 195 → 122 M). Why exact: texelFetch and
 // textureGather of the depth texture return the very floats the copy stores, so every
 // test reads the same value in every layout. The classification's own gathers keep
-// reading the depth texture. The copy belongs to the technique's cost: callers time it
-// inside their first pass after the shadow map. The layouts:
+// reading the depth texture. The copy is a pass of its own, declaredPass(), so that no
+// paper step's time includes it. The layouts:
 // - Texture: no copy, texelFetch of the depth texture (the paper path);
 // - Blocks: RGBA32F at half the map's size, a texel per 2×2 block, drawn with one gather
 //   a block (3.6 M instructions at 512²), a read picking its component;
@@ -16,6 +16,7 @@
 #include <string>
 
 #include "testbed/gl/objects.h"
+#include "testbed/gl/pass_timer.h"
 #include "testbed/gl/render_target.h"
 #include "testbed/render/screen_pass.h"
 #include "testbed/technique/declaration.h"
@@ -26,21 +27,20 @@ class DepthImage {
  public:
   enum class Layout { Texture, Blocks, Texels };
 
-  // revectorization.glsl's uShadowImage (defines() hands it to GLSL as
-  // RV_DEPTH_IMAGE_UNIT); clear of the image units the family's and EDTSM's shaders use
-  // otherwise.
-  static constexpr GLuint kUnit = 5;
-
   // The copy as a technique whose fast path lays it out as `layout` (not Texture) declares it.
   static ResourceDeclaration declared(Layout layout);
+  // The copy's pass, on the fast path only.
+  static PassDeclaration declaredPass();
 
   // Copies `shadowMap` (a depth or float texture) into the image, resized to match (booked
-  // as the device "depth-image"), and binds it; for Texture, releases any copy instead.
-  void update(const Texture& shadowMap);
-  // Binds the image at kUnit for reading (nothing for Texture).
+  // as the device "depth-image"), timed as declaredPass(), and binds it; for Texture,
+  // releases any copy instead.
+  void update(const Texture& shadowMap, PassTimer& timer);
+  // Binds the image at kDepthImageUnit (testbed/glsl/units.glsl) for reading (nothing for
+  // Texture).
   void bind() const;
   // The layout (Blocks unless set), and the defines revectorization.glsl (and
-  // depth_image.frag) read it and the image's unit from.
+  // depth_image.frag) read it from.
   void setLayout(Layout layout) { layout_ = layout; }
   Layout layout() const { return layout_; }
   std::string defines() const;

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "testbed/gl/objects.h"
+#include "testbed/glsl/units.h"
 #include "testbed/render/receiver_inputs.h"
 #include "testbed/render/screen_pass.h"
 #include "testbed/scene/view.h"
@@ -36,10 +37,10 @@ std::vector<glm::vec4> probe(const std::string& expression, const LightTransform
   target.finish({0});
   const Program program = Program::graphics("testbed/render/fullscreen.vert", "testbed/render/light_probe.frag",
                                             "#define PROBE(a, b) (" + expression + ")\n");
-  glBindTextureUnit(0, inputA.id());
-  glBindTextureUnit(1, inputB.id());
-  program.set("uA", 0);
-  program.set("uB", 1);
+  glBindTextureUnit(kProbeATextureUnit, inputA.id());
+  glBindTextureUnit(kProbeBTextureUnit, inputB.id());
+  program.set("uA", kProbeATextureUnit);
+  program.set("uB", kProbeBTextureUnit);
   bindLightUniforms(program, light, radius);
   ScreenPass().draw(program, target, {n, 1});
   const std::vector<float> raw = output.readFloats(4);

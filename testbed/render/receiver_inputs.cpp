@@ -2,6 +2,7 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "testbed/glsl/units.h"
 #include "testbed/render/gbuffer_pass.h"
 #include "testbed/technique/technique.h"
 
@@ -33,10 +34,10 @@ void bindReceiverInputs(const Program& program, const FrameInputs& in) {
 }
 
 void bindReceiverInputs(const Program& program, const FrameInputs& in, const glm::vec3& lightPosition) {
-  glBindTextureUnit(0, in.gbuffer.position().id());
-  glBindTextureUnit(1, in.gbuffer.normal().id());
-  program.set("uGPosition", 0);
-  program.set("uGNormal", 1);
+  glBindTextureUnit(kGPositionTextureUnit, in.gbuffer.position().id());
+  glBindTextureUnit(kGNormalTextureUnit, in.gbuffer.normal().id());
+  program.set("uGPosition", kGPositionTextureUnit);
+  program.set("uGNormal", kGNormalTextureUnit);
   LightTransforms light = in.light;
   light.position = lightPosition;
   bindLightUniforms(program, light, lightRadiusUniform(in.scene.light));

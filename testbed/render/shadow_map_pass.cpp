@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "testbed/glsl/units.h"
 #include "testbed/render/uniform_check.h"
 #include "testbed/scene/light_fit.h"
 #include "testbed/technique/technique.h"
@@ -109,8 +110,8 @@ LightRecord lightSetupRecord(const LightTransforms& light, int shadowMapSize, De
 }
 
 void bindShadowMap(const Program& program, const Texture& shadowMap) {
-  glBindTextureUnit(2, shadowMap.id());
-  program.set("uShadowMap", 2);
+  glBindTextureUnit(kShadowMapTextureUnit, shadowMap.id());
+  program.set("uShadowMap", kShadowMapTextureUnit);
   program.set("uShadowMapSize", glm::ivec2(shadowMap.width(), shadowMap.height()));
 }
 

@@ -18,6 +18,7 @@
 // EDTSM*: Macedo & Apolinário, "Improved anti-aliasing for Euclidean distance transform
 // shadow mapping", Computers & Graphics 71 (2018).
 #include "testbed/glsl/shadow_test.glsl"
+#include "testbed/glsl/units.glsl"
 
 uniform int uMaxSearch;  // the paper's L: most texels walked per direction (16)
 // Sloped-surface epsilon in normalized light depth (GI 2016 §3.1: 2.5e-5). One step of a
@@ -37,16 +38,16 @@ bool rvInsideMap(ivec2 t) {
 // of the same floats (cheaper to read one at a time on llvmpipe) in either of its layouts.
 // rvStoredDepth(t): the stored depth of texel t (inside the map), the very value that
 // shadowTestTexel's nearest lookup at the texel centre reads.
-#ifndef RV_DEPTH_IMAGE_UNIT
+#if !defined(RV_DEPTH_TEXTURE) && !defined(RV_DEPTH_TEXELS) && !defined(RV_DEPTH_BLOCKS)
 #error "compile with DepthImage::defines() (testbed/render/depth_image.h)"
 #endif
 #if defined(RV_DEPTH_TEXTURE)
 float rvStoredDepth(ivec2 t) { return texelFetch(uShadowMap, t, 0).r; }
 #elif defined(RV_DEPTH_TEXELS)
-layout(r32f, binding = RV_DEPTH_IMAGE_UNIT) uniform readonly image2D uShadowImage;
+layout(r32f, binding = kDepthImageUnit) uniform readonly image2D uShadowImage;
 float rvStoredDepth(ivec2 t) { return imageLoad(uShadowImage, t).r; }
 #else
-layout(rgba32f, binding = RV_DEPTH_IMAGE_UNIT) uniform readonly image2D uShadowImage;  // 2×2 blocks
+layout(rgba32f, binding = kDepthImageUnit) uniform readonly image2D uShadowImage;  // 2×2 blocks
 float rvStoredDepth(ivec2 t) {
   const vec4 block = imageLoad(uShadowImage, t >> 1);
   const vec2 row = (t.y & 1) != 0 ? block.zw : block.xy;

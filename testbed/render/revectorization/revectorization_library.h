@@ -45,9 +45,9 @@ class Common {
   void setPath(TechniquePath path, DepthImage::Layout fastLayout = DepthImage::Layout::Blocks) {
     depthImage_.setLayout(path == TechniquePath::Paper ? DepthImage::Layout::Texture : fastLayout);
   }
-  // Copies the frame's shadow map into the depth image (nothing on the paper path);
-  // callers time it inside their first pass after the shadow map, as part of the technique.
-  void updateDepthImage(const Texture& shadowMap) { depthImage_.update(shadowMap); }
+  // Copies the frame's shadow map into the depth image, timed as
+  // DepthImage::declaredPass() (nothing on the paper path).
+  void updateDepthImage(const Texture& shadowMap, PassTimer& timer) { depthImage_.update(shadowMap, timer); }
   // The defines every program that includes revectorization.glsl must be compiled with.
   std::string libraryDefines() const { return depthImage_.defines(); }
   // When a debug view was asked for, draws the light-space one (debug.frag) outside any
