@@ -10,6 +10,7 @@
 #include "groundtruth/stencil_counting.h"
 #include "groundtruth/volume_geometry.h"
 #include "testbed/gl/render_target.h"
+#include "testbed/glsl/units.h"
 #include "testbed/render/gbuffer_pass.h"
 #include "testbed/render/receiver_inputs.h"
 #include "testbed/render/screen_pass.h"
@@ -320,8 +321,8 @@ class ShadowVolumes final : public ShadowTechnique {
     glViewport(0, 0, in.size.x, in.size.y);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE);
-    glBindTextureUnit(2, count_.color().id());
-    resolveProgram_.set("uCount", 2);
+    glBindTextureUnit(kVolumeCountTextureUnit, count_.color().id());
+    resolveProgram_.set("uCount", kVolumeCountTextureUnit);
     resolveProgram_.set("uWeight", weight);
     bindReceiverInputs(resolveProgram_, in, light.position);
     resolveProgram_.set("uLightDirection", light.direction);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,8 @@ struct Case {
   std::string label() const {
     return scene + "_" + std::to_string(size.x) + "x" + std::to_string(size.y) + "_" + std::string(pathName(path));
   }
+  // What GoogleTest prints for the parameter (test listings and failures), rather than bytes.
+  friend void PrintTo(const Case& c, std::ostream* out) { *out << c.label(); }
 };
 
 class SpirvPath : public ::testing::TestWithParam<Case> {

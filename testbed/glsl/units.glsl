@@ -51,6 +51,13 @@ TESTBED_UNIT(Image, kLinksImageUnit, 4, BandedEdt)         // RG32I, a texel a p
 TESTBED_UNIT(Image, kBandEndsImageUnit, 6, BandedEdt)      // RG32I (columns, bands): a band's first and last site
 TESTBED_UNIT(Image, kBandStartImageUnit, 7, BandedEdt)     // R32I (columns, bands): the site winning a band's first row
 
+// The ground truth's shadow volumes (groundtruth/shadow_volumes.cpp).
+TESTBED_UNIT(Texture, kVolumeCountTextureUnit, 3, GroundTruth)  // volume_visibility.frag's uCount
+
+// The harness's shading pass (testbed/harness/shading.h), beside kGPositionTextureUnit.
+TESTBED_UNIT(Texture, kShadingNormalTextureUnit, 3, Shading)      // shading.frag's uShadingNormal
+TESTBED_UNIT(Texture, kShadingVisibilityTextureUnit, 4, Shading)  // shading.frag's uVisibility
+
 // The GLSL unit tests' probes.
 TESTBED_UNIT(Texture, kProbeATextureUnit, 3, Probe)
 TESTBED_UNIT(Texture, kProbeBTextureUnit, 4, Probe)

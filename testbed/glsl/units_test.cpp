@@ -20,10 +20,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The folders holding the repository's shaders, and those whose C++ binds units by the
-// table (the ground truth's shadow volumes still bind their count texture by number).
-const std::vector<std::string> kShaderFolders = {"testbed", "techniques", "groundtruth", "tests"};
-const std::vector<std::string> kCppFolders = {"testbed", "techniques", "tests"};
+// The folders holding the repository's shaders and the C++ that binds their units.
+const std::vector<std::string> kFolders = {"testbed", "techniques", "groundtruth", "tests"};
 
 bool hasExtension(const fs::path& path, const std::vector<std::string>& extensions) {
   for (const auto& e : extensions)
@@ -56,14 +54,14 @@ std::vector<std::string> linesMatching(const fs::path& root, const std::vector<s
 // Shader lines that write a unit's number in a layout's `binding =`.
 std::vector<std::string> literalBindings(const fs::path& root) {
   static const std::regex kLiteral(R"(\bbinding\s*=\s*[0-9])");
-  return linesMatching(root, kShaderFolders, {".glsl", ".frag", ".vert", ".comp"}, kLiteral);
+  return linesMatching(root, kFolders, {".glsl", ".frag", ".vert", ".comp"}, kLiteral);
 }
 
 // C++ lines that bind a texture unit, an image unit or a storage buffer by its number.
 std::vector<std::string> literalUnitCalls(const fs::path& root) {
   static const std::regex kLiteral(
       R"((glBindTextureUnit|glBindImageTexture)\s*\(\s*[0-9]|GL_SHADER_STORAGE_BUFFER\s*,\s*[0-9])");
-  return linesMatching(root, kCppFolders, {".cpp", ".h"}, kLiteral);
+  return linesMatching(root, kFolders, {".cpp", ".h"}, kLiteral);
 }
 
 std::string_view kindName(UnitKind kind) {

@@ -4,6 +4,8 @@
 
 #include <glm/glm.hpp>
 
+#include "testbed/glsl/units.h"
+
 namespace testbed {
 
 ImageF shadeVisibility(const ImageF& positions, const ImageF& normals, const LightTransforms& light,
@@ -33,13 +35,13 @@ void ShadingPass::draw(const GBuffer& gbuffer, const LightTransforms& light, con
                        glm::ivec2 size) {
   if (!program_) program_ = Program::graphics("testbed/render/fullscreen.vert", "testbed/harness/shading.frag");
   target_.ensure({.size = size, .color = GL_RGBA8});
-  glBindTextureUnit(0, gbuffer.position().id());
-  glBindTextureUnit(1, gbuffer.shadingNormal().id());
-  glBindTextureUnit(2, visibility.id());
+  glBindTextureUnit(kGPositionTextureUnit, gbuffer.position().id());
+  glBindTextureUnit(kShadingNormalTextureUnit, gbuffer.shadingNormal().id());
+  glBindTextureUnit(kShadingVisibilityTextureUnit, visibility.id());
   program_.use();
-  program_.set("uPosition", 0);
-  program_.set("uShadingNormal", 1);
-  program_.set("uVisibility", 2);
+  program_.set("uPosition", kGPositionTextureUnit);
+  program_.set("uShadingNormal", kShadingNormalTextureUnit);
+  program_.set("uVisibility", kShadingVisibilityTextureUnit);
   program_.set("uOrthographic", light.orthographic ? 1 : 0);
   program_.set("uLightPosition", light.position);
   program_.set("uLightDirection", light.direction);

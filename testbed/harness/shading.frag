@@ -5,8 +5,9 @@ uniform sampler2D uPosition;       // RGBA32F, w = 1 on geometry
 uniform sampler2D uShadingNormal;  // RGBA16F
 uniform sampler2D uVisibility;     // R32F
 uniform bool uOrthographic;
-uniform vec3 uLightPosition, uLightDirection;
-out vec4 color;
+uniform vec3 uLightPosition;
+uniform vec3 uLightDirection;
+layout(location = 0) out vec4 color;
 
 const float kAmbient = 0.15, kAlbedo = 0.85;
 const vec3 kBackground = vec3(0.18, 0.2, 0.24);
