@@ -56,7 +56,7 @@ FrameRunner::FrameRunner(const Scene& scene, const RenderSettings& settings)
     : scene_(scene), settings_(settings),
       path_(settings.path.value_or(defaultPath(reinterpret_cast<const char*>(glGetString(GL_RENDERER))))),
       light_(fittedLightTransforms(scene)), geometry_(scene),
-      gbuffer_(settings.size) {
+      gbuffer_(settings.size), shading_(settings.size) {
   renderGBuffer();
 }
 
@@ -120,7 +120,7 @@ PassTimes TechniqueSession::shadeFrame() {
   PassTimer timer;
   {
     auto scope = timer.scope("shading");
-    runner_.shading_.draw(runner_.gbuffer_, runner_.light_, target_.color(), runner_.settings_.size);
+    runner_.shading_.draw(runner_.gbuffer_, runner_.light_, target_.color());
   }
   checkGlError("shading " + id_ + "'s frame");
   return timer.resolve();

@@ -143,7 +143,7 @@ class FrameRunner {
   GpuScene geometry_;
   GBuffer gbuffer_;
   PassTimes gbufferTimes_;
-  // Its target is the harness's, booked to no technique.
+  // Its target is the harness's, allocated with the runner and booked to no technique.
   ShadingPass shading_;
   ImageF positions_, normals_;  // G-buffer readback for shading, top-down
 };

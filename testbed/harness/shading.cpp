@@ -31,10 +31,10 @@ ImageF shadeVisibility(const ImageF& positions, const ImageF& normals, const Lig
   return image;
 }
 
-void ShadingPass::draw(const GBuffer& gbuffer, const LightTransforms& light, const Texture& visibility,
-                       glm::ivec2 size) {
+ShadingPass::ShadingPass(glm::ivec2 size) : size_(size) { target_.ensure({.size = size, .color = GL_RGBA8}); }
+
+void ShadingPass::draw(const GBuffer& gbuffer, const LightTransforms& light, const Texture& visibility) {
   if (!program_) program_ = Program::graphics("testbed/render/fullscreen.vert", "testbed/harness/shading.frag");
-  target_.ensure({.size = size, .color = GL_RGBA8});
   glBindTextureUnit(kGPositionTextureUnit, gbuffer.position().id());
   glBindTextureUnit(kShadingNormalTextureUnit, gbuffer.shadingNormal().id());
   glBindTextureUnit(kShadingVisibilityTextureUnit, visibility.id());
@@ -45,7 +45,7 @@ void ShadingPass::draw(const GBuffer& gbuffer, const LightTransforms& light, con
   program_.set("uOrthographic", light.orthographic ? 1 : 0);
   program_.set("uLightPosition", light.position);
   program_.set("uLightDirection", light.direction);
-  screen_.draw(program_, target_.framebuffer(), size);
+  screen_.draw(program_, target_.framebuffer(), size_);
 }
 
 }  // namespace testbed

@@ -24,9 +24,12 @@ ImageF shadeVisibility(const ImageF& positions, const ImageF& normals, const Lig
 
 class ShadingPass {
  public:
-  // Shades `visibility` (R32F, `size`, the G-buffer's) into an RGBA8 image, the framebuffer
-  // a frame would present.
-  void draw(const GBuffer& gbuffer, const LightTransforms& light, const Texture& visibility, glm::ivec2 size);
+  // Allocates the `size` RGBA8 image now, so that it is never booked to the technique whose
+  // frame happens to be shaded first.
+  explicit ShadingPass(glm::ivec2 size);
+  // Shades `visibility` (R32F, the G-buffer's size) into the RGBA8 image, the framebuffer a
+  // frame would present.
+  void draw(const GBuffer& gbuffer, const LightTransforms& light, const Texture& visibility);
   // The last draw's image, bottom-up as GL stores it.
   const Texture& color() const { return target_.color(); }
 
@@ -34,6 +37,7 @@ class ShadingPass {
   Program program_;
   ScreenPass screen_;
   RenderTarget target_;
+  glm::ivec2 size_;
 };
 
 }  // namespace testbed
