@@ -163,39 +163,55 @@ std::string describeShaderLog(std::string_view log, const std::vector<std::strin
   return out;
 }
 
-std::vector<std::string> declaredUniforms(std::string_view source) {
-  // The source without comments, each replaced by a space.
-  std::string code;
-  for (std::size_t i = 0; i < source.size();) {
-    if (source.compare(i, 2, "//") == 0) {
-      i = source.find('\n', i);
-      if (i == std::string_view::npos) break;
-    } else if (source.compare(i, 2, "/*") == 0) {
-      const auto end = source.find("*/", i + 2);
-      i = end == std::string_view::npos ? source.size() : end + 2;
-      code += ' ';
+std::string blankComments(std::string_view source) {
+  std::string code(source);
+  for (std::size_t i = 0; i < code.size();) {
+    std::size_t end = i;
+    if (code.compare(i, 2, "//") == 0) {
+      end = std::min(code.find('\n', i), code.size());
+    } else if (code.compare(i, 2, "/*") == 0) {
+      const auto close = code.find("*/", i + 2);
+      end = close == std::string::npos ? code.size() : close + 2;
     } else {
-      code += source[i++];
+      ++i;
+      continue;
     }
+    for (; i < end; ++i)
+      if (code[i] != '\n') code[i] = ' ';
   }
-  const auto identifierChar = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-  std::vector<std::string> names;
-  for (std::size_t at = code.find("uniform"); at != std::string::npos; at = code.find("uniform", at + 7)) {
-    if ((at > 0 && identifierChar(code[at - 1])) || (at + 7 < code.size() && identifierChar(code[at + 7]))) continue;
+  return code;
+}
+
+namespace {
+bool isIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+}  // namespace
+
+std::vector<UniformDeclaration> uniformDeclarations(std::string_view code) {
+  std::vector<UniformDeclaration> found;
+  for (std::size_t at = code.find("uniform"); at != std::string_view::npos; at = code.find("uniform", at + 7)) {
+    if ((at > 0 && isIdentifierChar(code[at - 1])) || (at + 7 < code.size() && isIdentifierChar(code[at + 7]))) continue;
     const auto end = code.find_first_of(";{", at);
-    if (end == std::string::npos || code[end] == '{') continue;
+    if (end == std::string_view::npos || code[end] == '{') continue;
+    found.push_back({at, code.substr(at + 7, end - at - 7)});
+  }
+  return found;
+}
+
+std::vector<std::string> declaredUniforms(std::string_view source) {
+  const std::string code = blankComments(source);
+  std::vector<std::string> names;
+  for (const auto& [at, declaration] : uniformDeclarations(code)) {
     // "uniform [qualifiers] type a[, b[4], c = 1.0]": each declarator's name is the last
     // identifier before its '[' or '='.
-    std::string_view declaration(code.data() + at + 7, end - at - 7);
     for (std::size_t begin = 0; begin <= declaration.size();) {
       auto comma = declaration.find(',', begin);
       if (comma == std::string_view::npos) comma = declaration.size();
       std::string_view part = declaration.substr(begin, comma - begin);
       part = part.substr(0, part.find_first_of("[="));
       auto last = part.size();
-      while (last > 0 && !identifierChar(part[last - 1])) --last;
+      while (last > 0 && !isIdentifierChar(part[last - 1])) --last;
       auto first = last;
-      while (first > 0 && identifierChar(part[first - 1])) --first;
+      while (first > 0 && isIdentifierChar(part[first - 1])) --first;
       if (first < last) names.emplace_back(part.substr(first, last - first));
       begin = comma + 1;
     }

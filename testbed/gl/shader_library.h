@@ -32,6 +32,16 @@ std::string expandShaderSource(std::string_view key);  // expandShader(key).text
 // `fallback` ("techniques/pcf/pcf_visibility.frag: ..."); blank lines dropped.
 std::string describeShaderLog(std::string_view log, const std::vector<std::string>& files, std::string_view fallback);
 std::vector<std::string> embeddedShaderKeys();
+// `source` with every comment blanked to spaces, newlines kept: the same length, so an
+// offset found in it is an offset in `source`, and a `uniform` in a comment is not seen.
+std::string blankComments(std::string_view source);
+// Each `uniform ...;` declaration of comment-blanked `code` (uniform blocks are skipped):
+// where its keyword starts, and its text between the keyword and the ';'.
+struct UniformDeclaration {
+  std::size_t at;
+  std::string_view text;
+};
+std::vector<UniformDeclaration> uniformDeclarations(std::string_view code);
 // The names that GLSL `source` declares `uniform` (comments skipped, preprocessor branches
 // all read; uniform blocks are not looked into: the library has none), sorted, unique.
 std::vector<std::string> declaredUniforms(std::string_view source);

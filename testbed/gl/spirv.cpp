@@ -22,27 +22,6 @@ SpecializeShader g_specializeShader = nullptr;
 
 bool identifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
-// `source` with every comment blanked (same length, newlines kept), so positions in it are
-// positions in `source` and a `uniform` in a comment is never taken for a declaration.
-std::string withoutComments(std::string_view source) {
-  std::string code(source);
-  for (std::size_t i = 0; i < code.size();) {
-    std::size_t end = i;
-    if (code.compare(i, 2, "//") == 0) {
-      end = std::min(code.find('\n', i), code.size());
-    } else if (code.compare(i, 2, "/*") == 0) {
-      const auto close = code.find("*/", i + 2);
-      end = close == std::string::npos ? code.size() : close + 2;
-    } else {
-      ++i;
-      continue;
-    }
-    for (; i < end; ++i)
-      if (code[i] != '\n') code[i] = ' ';
-  }
-  return code;
-}
-
 // Where the layout qualifier ending right before `at` (whitespace between) closes, or npos.
 std::size_t layoutCloseBefore(const std::string& code, std::size_t at) {
   std::size_t close = at;
@@ -91,13 +70,10 @@ LocatedUniforms locateUniforms(std::vector<std::string> sources, std::string_vie
   LocatedUniforms out;
   GLint next = 0;
   for (std::string& source : sources) {
-    const std::string code = withoutComments(source);
+    const std::string code = blankComments(source);
     std::vector<std::pair<std::size_t, std::string>> insertions;  // position, text
-    for (auto at = code.find("uniform"); at != std::string::npos; at = code.find("uniform", at + 7)) {
-      if ((at > 0 && identifierChar(code[at - 1])) || (at + 7 < code.size() && identifierChar(code[at + 7]))) continue;
-      const auto end = code.find_first_of(";{", at);
-      if (end == std::string::npos || code[end] == '{') continue;  // a block: bindings, not locations
-      const Declaration declaration = declared(std::string_view(code).substr(at + 7, end - at - 7), what);
+    for (const auto& [at, text] : uniformDeclarations(code)) {  // blocks skipped: bindings, not locations
+      const Declaration declaration = declared(text, what);
       auto [slot, fresh] = out.locations.try_emplace(declaration.name, next);
       if (fresh) next += declaration.array ? kArrayLocations : 1;
       const std::string location = "location = " + std::to_string(slot->second);
