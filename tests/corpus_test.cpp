@@ -3,7 +3,10 @@
 // installed assets and assimp-testmodels) load and mostly show a shadow boundary.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <iostream>
+
+#include <nlohmann/json.hpp>
 
 #include "testbed/metrics/metrics.h"
 #include "testbed/scene/scene.h"
@@ -23,6 +26,31 @@ TEST(CorpusCommand, TwoRunsAreByteIdentical) {
   ASSERT_EQ(names.size(), 6u);  // five scenes and the manifest
   EXPECT_EQ(names, test::filesIn(dir / "b"));
   for (const auto& name : names) EXPECT_EQ(test::readFile(dir / "a" / name), test::readFile(dir / "b" / name)) << name;
+}
+
+// The manifest names the asset folder and its meshes "assets/…", not where the folder is
+// on this machine: the same meshes in two places give the same manifest.
+TEST(CorpusCommand, ManifestNamesAssetsRelativeToTheAssetFolder) {
+  test::TempDir dir;
+  std::vector<std::string> manifests;
+  for (const char* place : {"here", "there"}) {
+    const std::filesystem::path assets = dir / place / "assets-copy";
+    std::filesystem::create_directories(assets);
+    for (const char* mesh : {"cow.off", "knot.off"}) std::filesystem::copy_file(assetDirectory() / mesh, assets / mesh);
+    test::RunOptions options;
+    options.env = {{"TESTBED_ASSET_DIR", assets.string()}};
+    const auto run = test::runTestbed({"corpus", "--seed", "5", "--count", "2", "--out", (dir / place / "out").string(),
+                                       "--meshes", assets.string()},
+                                      options);
+    ASSERT_EQ(run.exitCode, 0) << run.describe();
+    manifests.push_back(test::readFile(dir / place / "out" / "manifest.json"));
+  }
+  EXPECT_EQ(manifests[0], manifests[1]);
+  const auto manifest = nlohmann::json::parse(manifests[0]);
+  EXPECT_EQ(manifest["mesh_folders"], nlohmann::json::array({"assets"}));
+  EXPECT_EQ(manifest["meshes"][0]["mesh"], "assets/cow.off");
+  EXPECT_EQ(manifest["meshes"][1]["mesh"], "assets/knot.off");
+  for (const auto& scene : manifest["scenes"]) EXPECT_TRUE(scene["mesh"].get<std::string>().starts_with("assets/"));
 }
 
 TEST(CorpusCommand, BadOptionsAreRefusedAndNothingIsWritten) {

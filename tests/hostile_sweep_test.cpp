@@ -183,6 +183,8 @@ TEST_F(HostileMerge, WhatIsMergedIsVerifiedAndNothingIsWritten) {
   otherParams[0]["params"]["kernel"] = 5;  // a parameter its cell does not have
   json otherPath = records;  // as if shard 2 ran with the other --path
   for (auto& record : otherPath) record["path"] = record["path"] == "paper" ? "fast" : "paper";
+  json otherShaderPath = records;  // as if shard 2 ran with TESTBED_SHADER_PATH=spirv
+  for (auto& record : otherShaderPath) record["shader_path"] = "spirv";
   json badOverrides = manifest;
   badOverrides["overrides"] = {{"shadow_map", "big"}};
   std::string huge = records.dump();
@@ -195,6 +197,8 @@ TEST_F(HostileMerge, WhatIsMergedIsVerifiedAndNothingIsWritten) {
       {"other-technique", "records.json", otherTechnique.dump(), "other-technique/records.json: [0].technique: "},
       {"other-params", "records.json", otherParams.dump(), ".params: "},
       {"other-path", "records.json", otherPath.dump(), "other-path/records.json: [0].path: made on the "},
+      {"other-shader-path", "records.json", otherShaderPath.dump(),
+       "other-shader-path/records.json: [0].shader_path: compiled by spirv, "},
       {"bad-overrides", "sweep.json", badOverrides.dump(), "bad-overrides/sweep.json: overrides.shadow_map: expected an integer"},
       {"huge-number", "records.json", huge, "huge-number/records.json: [0].cell: not a finite number"},
       {"deep", "spec.json", std::string(70000, '[') + std::string(70000, ']'), "deep/spec.json: JSON nested deeper than 64 levels"},

@@ -83,6 +83,10 @@ TEST(CliWorst, FindsThePlantedGrazingSunAndItsScenesReproduceTheFigures) {
   EXPECT_NE(run.err.find("[12/12]"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("ETA"), std::string::npos) << run.err;
   const json manifest = json::parse(readFile(out / "manifest.json"));
+  // The command that made it: the options given, in the order the command declares them.
+  EXPECT_EQ(manifest.at("command"), "testbed worst --scene " + family().string() +
+                                        " --technique sm --budget 12 --k 2 --seed 3 --map-sizes 128 --fixed-camera "
+                                        "--size 96x64 --out " + out.string());
   const json& cases = manifest.at("cases");
   ASSERT_EQ(cases.size(), 2u);
   // The failure region: the sun within 20° of the floor (the range searched is 3°..85°).

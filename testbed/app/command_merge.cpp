@@ -5,8 +5,9 @@
 // overrides; shards of another spec, other overrides or another build, a shard given
 // twice or missing refused; each record matched against its cell; figure images decoded
 // only at their cell's size and channels; --out never an input; records made on
-// different paths (docs/paths.md: different passes and memory) refused. Records of
-// different backends are kept in tables of their own.
+// different paths (docs/paths.md: different passes and memory) or by different shader
+// compilers (docs/portability.md) refused. Records of different backends are kept in
+// tables of their own.
 #include <iostream>
 #include <optional>
 #include <set>
@@ -131,8 +132,9 @@ CommandRunner addMergeCommand(CLI::App& app) {
         planSweep(spec, overridesFromJson(first.manifest["overrides"], (first.dir / "sweep.json").string() + ": overrides"));
     std::vector<Record> records;
     std::map<std::size_t, const ShardDir*> ownerOf;
-    std::string firstWhere;  // the first record, whose path every other must share
+    std::string firstWhere;  // the first record, whose paths every other must share
     std::optional<TechniquePath> firstPath;
+    ShaderPath firstShaderPath = ShaderPath::Glsl;
     for (const auto& s : shards)
       for (std::size_t i = 0; i < s.records.size(); ++i) {
         const std::string where = (s.dir / "records.json").string() + ": [" + std::to_string(i) + "]";
@@ -140,9 +142,14 @@ CommandRunner addMergeCommand(CLI::App& app) {
         if (firstWhere.empty()) {
           firstWhere = where;
           firstPath = record.path;
+          firstShaderPath = compiledBy(record);
         } else if (record.path != firstPath) {
           throw InputError(where + ".path: made on " + pathText(record.path) + ", " + firstWhere + " on " +
                            pathText(firstPath) + "; one table's shards run on one path (--path)");
+        } else if (compiledBy(record) != firstShaderPath) {
+          throw InputError(where + ".shader_path: compiled by " + std::string(shaderPathName(compiledBy(record))) + ", " +
+                           firstWhere + " by " + std::string(shaderPathName(firstShaderPath)) +
+                           "; one table's shards use one shader compiler (TESTBED_SHADER_PATH)");
         }
         if (!record.cell || *record.cell >= plan.cells.size())
           throw InputError(where + ".cell: missing or not a cell of the spec's " + std::to_string(plan.cells.size()));

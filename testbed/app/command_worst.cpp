@@ -207,6 +207,7 @@ int runWorst(const CLI::App& command, const WorstOptions& o) {
     cases.push_back(entry);
   }
   const nlohmann::json manifest = {
+      {"command", commandLine(command)},
       {"scene", o.scene},
       {"technique", o.technique},
       {"against", baseline ? nlohmann::json(o.against) : nlohmann::json(nullptr)},
@@ -224,7 +225,6 @@ int runWorst(const CLI::App& command, const WorstOptions& o) {
   };
   files.writeText("manifest.json", manifest.dump(2) + "\n");
   files.commit();
-  (void)command;
   std::cerr << "testbed: " << worst.size() << " worst of " << search.evaluated() << " configurations (worst "
             << cases.front()["figure"].get<double>() << ") in " << oneLine(o.common.out) << "\n";
   return 0;

@@ -46,6 +46,11 @@ void addFramesOption(CLI::App& command, std::string& frames);
 // --no-plot of sweep and merge: skip scripts/sweep_plot.py.
 void addNoPlotFlag(CLI::App& command, bool& noPlot);
 
+// The parsed `command` as a shell command line that runs it again ("testbed worst --scene
+// s.json --technique sm ..."): every option given, in the order the command declares
+// them, positional arguments last. For the manifests that name what made them.
+std::string commandLine(const CLI::App& command);
+
 // "1280x720" → {1280, 720}; throws InputError("--size: ...").
 glm::ivec2 parseSize(const std::string& text);
 // Collects repeated --set name=value into a map; throws InputError on a duplicate name.

@@ -1,4 +1,7 @@
+#include <algorithm>
+#include <cctype>
 #include <charconv>
+#include <string_view>
 
 #include "testbed/app/commands.h"
 #include "testbed/core/error.h"
@@ -44,6 +47,44 @@ void addFramesOption(CLI::App& command, std::string& frames) {
 
 void addNoPlotFlag(CLI::App& command, bool& noPlot) {
   command.add_flag("--no-plot", noPlot, "skip the matplotlib plots");
+}
+
+namespace {
+
+// `word` as a POSIX shell reads it back: as it is where it holds no special character,
+// else in single quotes (a quote inside written '\'').
+std::string shellWord(const std::string& word) {
+  const bool plain = !word.empty() && std::all_of(word.begin(), word.end(), [](unsigned char c) {
+    return std::isalnum(c) || std::string_view("_-+./:=,@%^").find(char(c)) != std::string_view::npos;
+  });
+  if (plain) return word;
+  std::string quoted = "'";
+  for (const char c : word) quoted.append(c == '\'' ? "'\\''" : std::string(1, c));
+  return quoted.append("'");
+}
+
+}  // namespace
+
+std::string commandLine(const CLI::App& command) {
+  std::string line = "testbed " + command.get_name(), positionals;
+  for (const CLI::Option* option : command.get_options()) {
+    if (option->count() == 0) continue;
+    if (!option->nonpositional()) {
+      for (const std::string& value : option->results()) positionals.append(" ").append(shellWord(value));
+      continue;
+    }
+    const std::string name = option->get_name();
+    if (option->get_expected_max() == 0) {  // a flag
+      for (std::size_t i = 0; i < option->count(); ++i) line.append(" ").append(name);
+      continue;
+    }
+    const bool eachValueNamed = option->get_expected_max() <= 1;
+    for (std::size_t i = 0; i < option->results().size(); ++i) {
+      if (i == 0 || eachValueNamed) line.append(" ").append(name);
+      line.append(" ").append(shellWord(option->results()[i]));
+    }
+  }
+  return line + positionals;
 }
 
 glm::ivec2 parseSize(const std::string& text) {

@@ -61,8 +61,8 @@ Declaration declared(std::string_view text, std::string_view what) {
 ShaderPath shaderPath() {
   const char* value = std::getenv("TESTBED_SHADER_PATH");
   const std::string_view path = value ? value : "";
-  if (path.empty() || path == "glsl") return ShaderPath::Glsl;
-  if (path == "spirv") return ShaderPath::Spirv;
+  if (path.empty()) return ShaderPath::Glsl;
+  if (const auto parsed = parseShaderPath(path)) return *parsed;
   throw InputError("TESTBED_SHADER_PATH: expected glsl or spirv, got '" + std::string(path) + "'");
 }
 

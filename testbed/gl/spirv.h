@@ -9,13 +9,9 @@
 #include <vector>
 
 #include "testbed/gl/gl.h"
+#include "testbed/gl/shader_path.h"
 
 namespace testbed {
-
-enum class ShaderPath { Glsl, Spirv };
-// From TESTBED_SHADER_PATH: "glsl" (or unset, or empty) or "spirv", read at every program
-// build so one process can build both ways. Throws InputError for any other value.
-ShaderPath shaderPath();
 
 // A SPIR-V program keeps no uniform names (the GL finds none: ARB_gl_spirv, "Uniform
 // variables"), so the testbed assigns the locations itself and keeps the table.

@@ -241,6 +241,10 @@ Record read(const Reader& r) {
     if (!out.path) r["path"].fail("expected \"paper\" or \"fast\"");
   }
   if (r.has("memory")) out.memory = readMemory(r["memory"]);
+  if (r.has("shader_path")) {
+    out.shaderPath = parseShaderPath(r["shader_path"].text());
+    if (!out.shaderPath) r["shader_path"].fail("expected \"glsl\" or \"spirv\"");
+  }
   for (const Metric& m : metricTable()) {
     if (m.path.empty() || (inErrorBlock(m) && error.value.is_null())) continue;
     // A soft metric without a reference has no key (soft_rmse: null).
@@ -285,6 +289,7 @@ Record makeRecord(const TechniqueRun& run, const FrameRunner& runner, const std:
   r.memoryBytes = run.memoryBytes;
   r.memory = run.memory;
   r.path = runner.path();
+  r.shaderPath = shaderPath();
   r.work = run.times.work;
   r.light = lightSetupRecord(runner.light(), s.shadowMapSize, s.depthFormat, run.params);
   r.backend = backend;
@@ -349,6 +354,7 @@ void to_json(json& out, const Record& r) {
   if (r.shadingMs) out["shading_ms"] = *r.shadingMs;
   if (r.sequence) out["sequence"] = *r.sequence;
   if (r.path) out["path"] = std::string(pathName(*r.path));
+  if (r.shaderPath) out["shader_path"] = std::string(shaderPathName(*r.shaderPath));
   if (r.memory) out["memory"] = memoryJson(*r.memory);
   if (r.workRecorded) out["work"] = workJson(r.work);
   bool soft = false;  // measured against the area-light reference too

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "testbed/gl/shader_path.h"
 #include "testbed/harness/frame_runner.h"
 #include "testbed/harness/timing.h"
 #include "testbed/render/shadow_map_pass.h"  // LightRecord
@@ -43,6 +44,9 @@ struct Record {
   // name, format, bytes, role); none in records written before either existed.
   std::optional<TechniquePath> path;
   std::optional<std::vector<GpuMemoryLedger::Resource>> memory;
+  // The front-end that compiled the run's shaders ("shader_path"); none in records written
+  // before it was recorded, which the driver's GLSL compiler compiled (compiledBy).
+  std::optional<ShaderPath> shaderPath;
   LightRecord light;
   std::string backend;
   // The work counters (docs/work-counters.md): "work": null where the GL offers no pipeline
@@ -61,6 +65,9 @@ struct Record {
 
 // The record of a run on `runner`, `error` empty.
 Record makeRecord(const TechniqueRun& run, const FrameRunner& runner, const std::string& backend);
+
+// The front-end that compiled the record's shaders: GLSL where the record does not say.
+inline ShaderPath compiledBy(const Record& record) { return record.shaderPath.value_or(ShaderPath::Glsl); }
 
 // The technique's frame time in the measure its `timing` names (no G-buffer).
 double frameTimeMs(const Record& record);

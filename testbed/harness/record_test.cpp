@@ -159,6 +159,34 @@ TEST(Record, WorkBlockIsCountsNullOrAbsent) {
   EXPECT_FALSE(json(before).contains("work"));
 }
 
+// The shader compiler a record names comes back as written; a record written before it
+// was named reads as the driver's GLSL compiler's and is written again without the key.
+TEST(Record, ShaderPathRoundTripsAndDefaultsToGlsl) {
+  json j = baselineRecord("sm");
+  j["shader_path"] = "spirv";
+  const Record spirv = j.get<Record>();
+  ASSERT_TRUE(spirv.shaderPath);
+  EXPECT_EQ(*spirv.shaderPath, ShaderPath::Spirv);
+  EXPECT_EQ(compiledBy(spirv), ShaderPath::Spirv);
+  EXPECT_EQ(json(spirv), j);
+  j["shader_path"] = "glsl";
+  EXPECT_EQ(compiledBy(j.get<Record>()), ShaderPath::Glsl);
+  EXPECT_EQ(json(j.get<Record>()), j);
+
+  j.erase("shader_path");
+  const Record old = j.get<Record>();
+  EXPECT_FALSE(old.shaderPath);
+  EXPECT_EQ(compiledBy(old), ShaderPath::Glsl);
+  EXPECT_FALSE(json(old).contains("shader_path"));
+
+  j["shader_path"] = "hlsl";
+  EXPECT_EQ(test::inputErrorOf([&] { readRecord(j, "runs/x.json: [0]"); }).value_or("accepted"),
+            "runs/x.json: [0].shader_path: expected \"glsl\" or \"spirv\"");
+  j["shader_path"] = 1;
+  EXPECT_EQ(test::inputErrorOf([&] { readRecord(j, "runs/x.json: [0]"); }).value_or("accepted"),
+            "runs/x.json: [0].shader_path: expected a string");
+}
+
 TEST(Record, MalformedRecordsNameTheField) {
   auto message = [](const json& j) {
     return test::inputErrorOf([&] { readRecord(j, "runs/x.json: [4]"); }).value_or("accepted");

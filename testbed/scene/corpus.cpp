@@ -61,6 +61,7 @@ class Draw {
 struct MeshInfo {
   fs::path file, folder;  // folder: the --meshes folder it was found in
   std::string reference;  // what the scene's "mesh" key holds
+  std::string named;      // how the manifest names the file (manifestName)
   std::string stem;       // for scene names
   std::size_t triangles = 0;
   std::vector<glm::dvec3> points;
@@ -70,6 +71,16 @@ struct MeshInfo {
 std::string lower(std::string text) {
   for (auto& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
   return text;
+}
+
+// How the manifest names `file`, found in the --meshes `folder`: where that folder is the
+// asset folder (`assets`, canonical), "assets/<path in it>" wherever the asset folder is on
+// this machine, so that a corpus's manifest is the same on every machine; else as found.
+std::string manifestName(const fs::path& file, const fs::path& folder, const fs::path& assets) {
+  std::error_code ec;
+  if (assets.empty() || fs::weakly_canonical(folder, ec) != assets) return file.generic_string();
+  const fs::path inside = file.lexically_relative(folder);
+  return inside.empty() || inside == "." ? "assets" : (fs::path("assets") / inside).generic_string();
 }
 
 std::string sanitized(const std::string& text) {
@@ -101,7 +112,8 @@ std::vector<MeshInfo> usableMeshes(const std::vector<std::pair<fs::path, fs::pat
   std::error_code ec;
   const fs::path assets = fs::weakly_canonical(assetDirectory(), ec);
   for (const auto& [file, folder] : candidates) {
-    auto skip = [&](const std::string& why) { skipped.push_back({{"mesh", file.generic_string()}, {"why", why}}); };
+    const std::string named = manifestName(file, folder, assets);
+    auto skip = [&](const std::string& why) { skipped.push_back({{"mesh", named}, {"why", why}}); };
     TriMesh mesh;
     try {
       mesh = readMeshFile(file);
@@ -112,6 +124,7 @@ std::vector<MeshInfo> usableMeshes(const std::vector<std::pair<fs::path, fs::pat
     MeshInfo info;
     info.file = file;
     info.folder = folder;
+    info.named = named;
     info.triangles = mesh.n_faces();
     info.stem = sanitized(file.stem().string());
     const bool asset = fs::weakly_canonical(file.parent_path(), ec) == assets && lower(file.extension().string()) == ".off";
@@ -135,7 +148,7 @@ std::vector<MeshInfo> usableMeshes(const std::vector<std::pair<fs::path, fs::pat
       skip("flat (thinner than 2 % of its size): it would lie in the receiver plane");
     } else {
       Json key = {info.triangles, r4(extent.x / largest), r4(extent.y / largest), r4(extent.z / largest)};
-      const auto [it, fresh] = seen.emplace(key.dump(), file.generic_string());
+      const auto [it, fresh] = seen.emplace(key.dump(), named);
       if (!fresh) {
         skip("the same mesh as " + it->second + " (triangle count and proportions)");
         continue;
@@ -376,7 +389,7 @@ SceneSample sampleScene(const CorpusOptions& options, std::size_t index, const s
       {"light", lightJson},
       {"objects", objects}};
   sample.manifest = {{"file", name + ".json"},
-                     {"mesh", mesh.file.generic_string()},
+                     {"mesh", mesh.named},
                      {"light", spot ? "spot" : "directional"},
                      {"elevation_deg", elevation},
                      {"azimuth_deg", azimuth},
@@ -430,8 +443,10 @@ Corpus generateCorpus(const CorpusOptions& options) {
                    {"meshes", Json::array()},
                    {"skipped", skipped},
                    {"scenes", Json::array()}};
-  for (const auto& f : options.meshFolders) manifest["mesh_folders"].push_back(f.generic_string());
-  for (const auto& m : meshes) manifest["meshes"].push_back({{"mesh", m.file.generic_string()}, {"triangles", m.triangles}});
+  std::error_code ec;
+  const fs::path assets = fs::weakly_canonical(assetDirectory(), ec);
+  for (const auto& f : options.meshFolders) manifest["mesh_folders"].push_back(manifestName(f, f, assets));
+  for (const auto& m : meshes) manifest["meshes"].push_back({{"mesh", m.named}, {"triangles", m.triangles}});
   for (int i = 0; i < options.count; ++i) {
     SceneSample sample = sampleScene(options, std::size_t(i), meshes);
     corpus.scenes.push_back({sample.manifest["file"].get<std::string>(), sample.scene.dump(2) + "\n"});

@@ -304,7 +304,7 @@ std::vector<SweepRow> varied(const SweepRow& row, const json& vary, const SpecRe
         SweepRow next = base;
         const std::string text = r.parameterValue(values[i], where + "[" + std::to_string(i) + "]");
         next.set.params[name] = text;
-        next.label += " " + name.substr(name.find('.') + 1) + "=" + text;
+        next.label.append(" ").append(name, name.find('.') + 1).append("=").append(text);
         product.push_back(std::move(next));
         if (product.size() > kMaxSweepRows) r.fail(where, "more than " + std::to_string(kMaxSweepRows) + " rows");
       }

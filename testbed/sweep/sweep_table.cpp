@@ -145,6 +145,8 @@ SweepTable buildSweepTable(const SweepSpec& spec, const SweepPlan& plan, const s
       if (!baseline) {
         row.oursRatio.push_back(std::nullopt);
         row.paperRatio.push_back(std::nullopt);
+        row.oursDifference.push_back(std::nullopt);
+        row.paperDifference.push_back(std::nullopt);
         continue;
       }
       const auto& ours = plan.entries[r][c];
@@ -161,10 +163,47 @@ SweepTable buildSweepTable(const SweepSpec& spec, const SweepPlan& plan, const s
   return table;
 }
 
+namespace {
+
+bool anyPaperColumn(const SweepTable& table) {
+  return std::find(table.paperColumns.begin(), table.paperColumns.end(), true) != table.paperColumns.end();
+}
+
+// One numeric column of the Markdown table: its heading and where its figures are.
+struct FigureColumn {
+  std::string heading;
+  std::vector<std::optional<double>> SweepTableRow::*values;
+  std::size_t column;  // the spec's column the figures belong to
+  int digits;
+};
+
+// The Markdown table's numeric columns: every spec column's figures, ours and the paper's;
+// then per spec column its comparisons with sm, in the order the HTML page writes each
+// entry (report/report_html.cpp sweepEntryText: ours, the paper's, ×SM, −SM), so a
+// column's −SM stands beside its ×SM.
+std::vector<FigureColumn> figureColumns(const SweepTable& table) {
+  const bool anyPaper = anyPaperColumn(table);
+  std::vector<FigureColumn> out;
+  auto add = [&](std::size_t c, const char* mark, auto ours, auto paper, int digits) {
+    const std::string name = markdownText(table.columns[c]);
+    out.push_back({name + (anyPaper ? " ours" : "") + mark, ours, c, digits});
+    if (c < table.paperColumns.size() && table.paperColumns[c]) out.push_back({name + " paper" + mark, paper, c, digits});
+  };
+  for (std::size_t c = 0; c < table.columns.size(); ++c)
+    add(c, "", &SweepTableRow::ours, &SweepTableRow::paper, table.digits);
+  for (std::size_t c = 0; c < table.columns.size(); ++c) {
+    if (table.hasRatios) add(c, " ×SM", &SweepTableRow::oursRatio, &SweepTableRow::paperRatio, 2);
+    if (table.hasDifferences)
+      add(c, " −SM", &SweepTableRow::oursDifference, &SweepTableRow::paperDifference, table.digits);
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& header) {
   std::ostringstream md;
-  const bool anyPaper = std::find(table.paperColumns.begin(), table.paperColumns.end(), true) != table.paperColumns.end();
-  auto paperShown = [&](std::size_t c) { return c < table.paperColumns.size() && table.paperColumns[c]; };
+  const bool anyPaper = anyPaperColumn(table);
   md << "# " << (table.title.empty() ? table.name : table.title) << "\n\n";
   if (!table.citation.empty()) md << "Paper: " << table.citation << ". ";
   else if (!anyPaper) md << "A study of one's own (no paper's figures). ";
@@ -183,27 +222,11 @@ std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& heade
   if (!table.note.empty()) md << table.note << "\n\n";
 
   const bool groups = std::any_of(table.rows.begin(), table.rows.end(), [](const auto& r) { return !r.group.empty(); });
+  const std::vector<FigureColumn> figures = figureColumns(table);
   md << "|" << (groups ? " |" : "") << " technique |";
-  std::size_t n = 0;
-  for (std::size_t c = 0; c < table.columns.size(); ++c) {
-    md << " " << markdownText(table.columns[c]) << (anyPaper ? " ours" : "") << " |";
-    if (paperShown(c)) md << " " << markdownText(table.columns[c]) << " paper |";
-    n += paperShown(c) ? 2 : 1;
-  }
-  if (table.hasRatios)
-    for (std::size_t c = 0; c < table.columns.size(); ++c) {
-      md << " " << markdownText(table.columns[c]) << (anyPaper ? " ours" : "") << " ×SM |";
-      if (paperShown(c)) md << " " << markdownText(table.columns[c]) << " paper ×SM |";
-      n += paperShown(c) ? 2 : 1;
-    }
-  if (table.hasDifferences)
-    for (std::size_t c = 0; c < table.columns.size(); ++c) {
-      md << " " << table.columns[c] << (anyPaper ? " ours" : "") << " −SM |";
-      if (paperShown(c)) md << " " << table.columns[c] << " paper −SM |";
-      n += paperShown(c) ? 2 : 1;
-    }
+  for (const FigureColumn& f : figures) md << " " << f.heading << " |";
   md << "\n|" << (groups ? "---|" : "") << "---|";
-  for (std::size_t i = 0; i < n; ++i) md << "---:|";
+  for (std::size_t i = 0; i < figures.size(); ++i) md << "---:|";
   md << "\n";
   std::string lastGroup;
   for (std::size_t r = 0; r < table.rows.size(); ++r) {
@@ -212,20 +235,7 @@ std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& heade
     if (groups) md << " " << (r == 0 || row.group != lastGroup ? markdownText(row.group) : "") << " |";
     lastGroup = row.group;
     md << " " << markdownText(row.label) << (row.notMeasured.empty() ? "" : " †") << " |";
-    for (std::size_t c = 0; c < table.columns.size(); ++c) {
-      md << " " << number(row.ours[c], table.digits) << " |";
-      if (paperShown(c)) md << " " << number(row.paper[c], table.digits) << " |";
-    }
-    if (table.hasRatios)
-      for (std::size_t c = 0; c < table.columns.size(); ++c) {
-        md << " " << number(row.oursRatio[c], 2) << " |";
-        if (paperShown(c)) md << " " << number(row.paperRatio[c], 2) << " |";
-      }
-    if (table.hasDifferences)
-      for (std::size_t c = 0; c < table.columns.size(); ++c) {
-        md << " " << number(row.oursDifference[c], table.digits) << " |";
-        if (paperShown(c)) md << " " << number(row.paperDifference[c], table.digits) << " |";
-      }
+    for (const FigureColumn& f : figures) md << " " << number((row.*f.values)[f.column], f.digits) << " |";
     md << "\n";
   }
   std::set<std::string> footnotes;  // each row label and reason once, however many groups repeat it

@@ -207,7 +207,7 @@ TEST(SweepTable, MeansRatiosAndPasses) {
 }
 
 // "differences": each row minus its sm row in the measure's unit, ours and the paper's,
-// beside the ratio.
+// each column's beside its ratio (as the HTML page's entries have them).
 TEST(SweepTable, DifferencesToSm) {
   json document = tinySpec();
   document["differences"] = true;
@@ -224,7 +224,11 @@ TEST(SweepTable, DifferencesToSm) {
   EXPECT_DOUBLE_EQ(*table.rows[1].paperDifference[0], *table.rows[1].paper[0] - *table.rows[0].paper[0]);
   EXPECT_DOUBLE_EQ(*table.rows[0].oursDifference[0], 0.0);
   const std::string md = sweepTableMarkdown(table, {});
-  EXPECT_NE(md.find(" −SM |"), std::string::npos);
+  EXPECT_NE(md.find("| c paper | a ours ×SM | a paper ×SM | a ours −SM | a paper −SM | b ours ×SM |"), std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| c ours ×SM | c paper ×SM | c ours −SM | c paper −SM |\n"), std::string::npos) << md;
+  // The PF row's a column: 7 ms, against SM's 3 ms: ratio 2.33 beside difference 4.
+  EXPECT_NE(md.find("| 2.33 | 2.00 | 4.00 | 1.00 |"), std::string::npos) << md;
   EXPECT_FALSE(buildSweepTable(parseSweepSpec(tinySpec(), kSpecFile), plan, records).hasDifferences);
   document["differences"] = "yes";
   EXPECT_THROW(parseSweepSpec(document, kSpecFile), InputError);
