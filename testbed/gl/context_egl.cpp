@@ -9,11 +9,6 @@
 #include <string>
 #include <vector>
 
-#if defined(__SANITIZE_ADDRESS__)
-#include <dlfcn.h>
-#include <link.h>
-#endif
-
 #include "testbed/core/error.h"
 #include "testbed/gl/context.h"
 
@@ -55,27 +50,6 @@ std::vector<EGLDisplay> candidateDisplays() {
     displays.push_back(getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr));
   return displays;
 }
-
-#if defined(__SANITIZE_ADDRESS__)
-// LeakSanitizer looks for leaks at exit, after eglTerminate has unloaded Mesa's DRI driver.
-// The driver keeps allocations reachable from its own globals until then; once its pages
-// are unmapped they look leaked, and no stack can name their library. Kept loaded, they
-// are seen as what they are, and a leak of ours is still reported.
-void keepDriversLoaded() {
-  std::vector<std::string> drivers;
-  dl_iterate_phdr(
-      [](dl_phdr_info* info, size_t, void* found) {
-        const std::string name = info->dlpi_name ? info->dlpi_name : "";
-        if (name.find("/dri/") != std::string::npos) static_cast<std::vector<std::string>*>(found)->push_back(name);
-        return 0;
-      },
-      &drivers);
-  // Outside the iteration, which holds the loader's lock.
-  for (const std::string& driver : drivers) dlopen(driver.c_str(), RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE);
-}
-#else
-void keepDriversLoaded() {}
-#endif
 
 class EglContext final : public GlContext {
  public:
@@ -129,7 +103,6 @@ class EglContext final : public GlContext {
     }
     display_ = display;
     context_ = context;
-    keepDriversLoaded();
     return true;
   }
 
