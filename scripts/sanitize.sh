@@ -43,7 +43,7 @@ SUPP
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
 export LSAN_OPTIONS="suppressions=$suppressions:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
-# Only the GoogleTest tests (named Suite.Test): the Python and browser tests run no
-# sanitized code.
+# Only the GoogleTest tests (named Suite.Test, or Prefix/Suite.Test/Case followed by
+# "  # GetParam() = ..."): the Python and browser tests run no sanitized code.
 ctest --test-dir "$build_dir" --output-on-failure -j"$jobs" \
-  -R '^[A-Za-z0-9_/]+\.[A-Za-z0-9_/]+$' -E '^Docs\.|^Plugin\.ShaderMissing' "$@"
+  -R '^[A-Za-z0-9_/]+\.[A-Za-z0-9_/]+( |$)' -E '^Docs\.|^Plugin\.ShaderMissing' "$@"

@@ -208,6 +208,11 @@ CheckReport compareRecords(const std::vector<CheckRecord>& baseline, const std::
     }
 
     const Record &br = b.record, &cr = c.record;
+    if (compiledBy(br) != compiledBy(cr))
+      addNote(report, "shaders compiled by different front-ends (baseline " + std::string(shaderPathName(compiledBy(br))) +
+                          ", current " + std::string(shaderPathName(compiledBy(cr))) +
+                          "): they may round filtered visibility differently (docs/portability.md), so a small "
+                          "accuracy change can be the compiler's.");
     if (br.technique != "sm") {  // sm is the speed reference: its ratio is 1 by definition
       if (br.backend != cr.backend) {
         addNote(report, "speed not compared: the backends differ (baseline `" + br.backend + "`, current `" +

@@ -173,6 +173,18 @@ TEST(RegressionCheck, DifferentBackendsSkipSpeedButCheckAccuracy) {
   EXPECT_NE(checkReportMarkdown(c.report, {}).find("egl: NVIDIA H100"), std::string::npos);
 }
 
+TEST(RegressionCheck, DifferentShaderCompilersAreNamedAndStillCompared) {
+  json current = run();
+  for (auto& r : current) r["shader_path"] = "spirv";
+  current[2]["error"]["rmse"] = 0.1;
+  const Checked c = check(run(), current);  // the baseline predates the field: glsl
+  EXPECT_EQ(findings(c, FindingKind::Regression), Names{"pcf rmse"});
+  ASSERT_EQ(c.report.notes.size(), 1u);
+  EXPECT_TRUE(hasNote(c, "shaders compiled by different front-ends (baseline glsl, current spirv)"));
+  for (auto& r : current) r["shader_path"] = "glsl";
+  EXPECT_TRUE(check(run(), current).report.notes.empty());
+}
+
 TEST(RegressionCheck, AnyMemoryIncreaseIsARegression) {
   json current = run();
   current[2]["memory_bytes"] = 524289;

@@ -282,7 +282,7 @@ std::string sweepEntryText(const nlohmann::json& table, const nlohmann::json& ro
   auto number = [&](const char* key, int digits) { return formatFixed(value(key), digits); };
   auto signedNumber = [&](const char* key, int digits) {
     const std::optional<double> v = value(key);
-    return (v && *v > 0 ? "+" : "") + formatFixed(v, digits);
+    return std::string(v && *v > 0 ? "+" : "").append(formatFixed(v, digits));
   };
   const nlohmann::json paperColumns = table.value("paper_columns", nlohmann::json::array());
   const bool paper = column < paperColumns.size() && paperColumns[column].is_boolean() && paperColumns[column].get<bool>();
