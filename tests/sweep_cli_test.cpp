@@ -132,6 +132,10 @@ TEST(CliMerge, ShardsJoinIntoTheWholeRunsCellsAndMismatchesAreRefused) {
             cellsOf(json::parse(readFile(tmp / "whole" / "records.json"))));
   EXPECT_TRUE(fs::exists(tmp / "merged" / "tiny.md"));
   EXPECT_TRUE(fs::exists(tmp / "merged" / "tiny-closeup-wall.png"));
+  // The command as typed back by the shared command-line writer: options in declared order, shards last.
+  EXPECT_EQ(json::parse(readFile(tmp / "merged" / "sweep.json")).at("command"),
+            "testbed merge --out " + (tmp / "merged").string() + " --no-plot " + (tmp / "shard1").string() + " " +
+                (tmp / "shard2").string());
 
   // Another spec (other overrides count as another spec), another build, a missing or doubled shard.
   ASSERT_EQ(runTestbed({"sweep", "--spec", spec, "--shard", "2/2", "--shadow-map", "32", "--out", (tmp / "other").string()})

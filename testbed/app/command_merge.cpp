@@ -82,7 +82,7 @@ CommandRunner addMergeCommand(CLI::App& app) {
   addNoPlotFlag(*command, options->noPlot);
   addPluginOption(*command, options->plugins);
 
-  return {command, [options]() {
+  return {command, [options, command]() {
     if (fs::exists(options->out) && !fs::is_directory(options->out))
       throw InputError("--out: " + options->out + " exists and is not a folder");
     for (const auto& dir : options->shards)
@@ -176,17 +176,17 @@ CommandRunner addMergeCommand(CLI::App& app) {
         figureImages[cell] = {readImage(dir / figureFileName(cell, "exr"), {size.x, size.y, 1}),
                               readImage(dir / figureFileName(cell, "png"), {size.x, size.y, 3})};
     }
-    std::string commandLine = "testbed merge --out " + options->out, machines, backends;
+    std::string machines, backends;
     std::set<std::string> hosts, allBackends;
     for (const auto& s : shards) {
-      commandLine += " " + s.dir.string();
       if (hosts.insert(field(s, "host")).second) machines += (machines.empty() ? "" : "; ") + field(s, "host");
       allBackends.insert(field(s, "backend"));
     }
     for (const auto& b : allBackends) backends += (backends.empty() ? "" : "; ") + b;
     json manifest = first.manifest;
     manifest["shard"] = "1/1";
-    manifest["command"] = commandLine;
+    const std::string line = commandLine(*command);
+    manifest["command"] = line;
     manifest["host"] = machines;
     manifest["backend"] = backends;
     manifest["merged_from"] = json::array();
@@ -197,7 +197,7 @@ CommandRunner addMergeCommand(CLI::App& app) {
     files.writeText("sweep.json", manifest.dump(2) + "\n");
     files.writeText("spec.json", first.spec.dump(2) + "\n");
     stageSweepReport(files, spec, plan, records,
-                     {{"command", commandLine}, {"machine", machines}, {"backend", backends}, {"build", field(first, "build")}},
+                     {{"command", line}, {"machine", machines}, {"backend", backends}, {"build", field(first, "build")}},
                      figureImages, !options->noPlot);
     files.commit();
     std::cerr << "testbed: merged " << shards.size() << " shards, " << records.size() << " records, into " << options->out << "\n";
