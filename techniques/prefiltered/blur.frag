@@ -7,8 +7,12 @@
 //
 // The row pass may run one fragment per several outputs (separable_blur.h), fetching each
 // of their outputs + 2·BLUR_RADIUS source texels once; every sum is the plain pass's, on
-// the same values, so the result is the same bit for bit; what changes is the number of
-// fragments and fetches, which is what a software rasterizer spends its time on, not bytes.
+// the same values; what changes is the number of fragments and fetches, which is what a
+// software rasterizer spends its time on, not bytes. The sums are `precise`: the GLSL 4.50
+// specification then requires their operations in the order written, with no fused
+// multiply-add, and single-precision + and × are correctly rounded, so the packed and the
+// plain programs give the same bits on any conforming implementation, not only on the
+// compiler that happens to fuse them alike (NVIDIA's did not, at kernel 17).
 //  BLUR_PACK > 1 (R32F: 4, RG32F: 2): BLUR_PACK consecutive texels of a row, 4 / BLUR_PACK
 //    channels each, in one RGBA32F texel of the intermediate; the column pass unpacks.
 //  BLUR_LAYERS > 1 (RGBA32F, RGBA16: no spare channels): the outputs go to as many colour
@@ -35,7 +39,7 @@ void rowSums(int x0, int y, out vec4 sums[kRowOutputs]) {
   vec4 taps[kTaps];  // source texel x0 − BLUR_RADIUS + j
   for (int j = 0; j < kTaps; ++j) taps[j] = texelFetch(uSource, clamp(ivec2(x0 - BLUR_RADIUS + j, y), ivec2(0), last), 0);
   for (int k = 0; k < kRowOutputs; ++k) {
-    vec4 sum = uWeights[0] * taps[k + BLUR_RADIUS];
+    precise vec4 sum = uWeights[0] * taps[k + BLUR_RADIUS];
     for (int i = 1; i <= BLUR_RADIUS; ++i)
       sum += uWeights[i] * (taps[k + BLUR_RADIUS + i] + taps[k + BLUR_RADIUS - i]);
     sums[k] = sum;
@@ -50,7 +54,7 @@ void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);
   int lastRow = textureSize(uSource, 0).y - 1;
   ivec3 source = ivec3(texel.x / BLUR_LAYERS, texel.y, texel.x % BLUR_LAYERS);
-  vec4 sum = uWeights[0] * texelFetch(uSource, source, 0);
+  precise vec4 sum = uWeights[0] * texelFetch(uSource, source, 0);
   for (int i = 1; i <= BLUR_RADIUS; ++i) {
     sum += uWeights[i] * (texelFetch(uSource, ivec3(source.x, min(source.y + i, lastRow), source.z), 0) +
                           texelFetch(uSource, ivec3(source.x, max(source.y - i, 0), source.z), 0));
@@ -73,7 +77,7 @@ layout(location = 0) out vec4 outMoments;
 void main() {
   ivec2 texel = ivec2(gl_FragCoord.xy);
   ivec2 last = textureSize(uSource, 0) - 1;
-  vec4 sum = uWeights[0] * texelFetch(uSource, texel, 0);
+  precise vec4 sum = uWeights[0] * texelFetch(uSource, texel, 0);
   for (int i = 1; i <= BLUR_RADIUS; ++i) {
     sum += uWeights[i] * (texelFetch(uSource, clamp(texel + i * kStep, ivec2(0), last), 0) +
                           texelFetch(uSource, clamp(texel - i * kStep, ivec2(0), last), 0));
@@ -111,7 +115,7 @@ void main() {
     // Columns: the packed intermediate has the map's height; its texel texel.x / BLUR_PACK.
     ivec2 source = ivec2(texel.x / BLUR_PACK, texel.y);
     int k = texel.x - source.x * BLUR_PACK;
-    vec4 sum = uWeights[0] * unpack(texelFetch(uSource, source, 0), k);
+    precise vec4 sum = uWeights[0] * unpack(texelFetch(uSource, source, 0), k);
     for (int i = 1; i <= BLUR_RADIUS; ++i) {
       sum += uWeights[i] * (unpack(texelFetch(uSource, clamp(source + i * kStep, ivec2(0), last), 0), k) +
                             unpack(texelFetch(uSource, clamp(source - i * kStep, ivec2(0), last), 0), k));

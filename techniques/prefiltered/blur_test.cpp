@@ -1,6 +1,7 @@
 // The separable blur's packed intermediate (blur.frag's BLUR_PACK, R32F and RG32F moments)
 // against the plain one it replaced: equal bit for bit at kernel sizes 3 (the papers')
-// and 17 (GI 2016 Table 5's widest), on a map whose width is no multiple of the pack, with
+// and 17 (GI 2016 Table 5's widest), which the GLSL specification guarantees for blur.frag's
+// `precise` sums on any implementation, on a map whose width is no multiple of the pack, with
 // values over the exponential warps' range. The formats that do not pack run the plain
 // path either way and are checked too. And the blur of a region (the scissor of
 // sampled_texels.h) from moments that hold their values over reads(region) only, garbage

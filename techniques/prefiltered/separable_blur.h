@@ -6,7 +6,8 @@
 // the four-channel formats (RGBA32F, RGBA16) write kLayers row neighbours to as many
 // attachments, the layers of a scratch array of their own format (BLUR_LAYERS). Either
 // gives the same result bit for bit as the plain scratch texture of the moments' own
-// format (blur_test.cpp compares them).
+// format, which the GLSL specification guarantees because blur.frag's sums are `precise`
+// (blur_test.cpp compares them).
 #include <vector>
 
 #include <glm/glm.hpp>
