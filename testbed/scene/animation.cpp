@@ -58,7 +58,20 @@ glm::vec3 directionAt(const Track<glm::vec3>& track, int frame, glm::vec3 fallba
   if (track.empty()) return fallback;
   const auto b = bracket(track, frame);
   if (b.t == 0.0f) return *b.before;
-  return glm::normalize(glm::slerp(glm::normalize(*b.before), glm::normalize(*b.after), b.t));
+  const glm::vec3 from = glm::normalize(*b.before), to = glm::normalize(*b.after);
+  // slerp divides by the sine of the angle between the keys, 0 for equal keys. Below
+  // 0.01 rad the chord's normalized point is the arc's to within 3·10⁻⁸ rad, under float's
+  // resolution of a unit vector.
+  if (glm::dot(from, to) > 0.99995f) return glm::normalize(glm::mix(from, to, b.t));
+  return glm::normalize(glm::slerp(from, to, b.t));
+}
+
+std::optional<glm::vec3> unitDirection(glm::vec3 v) {
+  const float largest = glm::max(glm::abs(v.x), glm::max(glm::abs(v.y), glm::abs(v.z)));
+  if (!(largest > 0.0f) || !std::isfinite(largest)) return std::nullopt;
+  const glm::vec3 unit = glm::normalize(v / largest);
+  if (!std::isfinite(unit.x) || !std::isfinite(unit.y) || !std::isfinite(unit.z)) return std::nullopt;
+  return unit;
 }
 
 CameraDesc cameraAt(const Animation& a, int frame) {

@@ -43,8 +43,12 @@ struct Animation {
 // between them.
 glm::vec3 valueAt(const Track<glm::vec3>& track, int frame, glm::vec3 fallback);
 float valueAt(const Track<float>& track, int frame, float fallback);
-// Unit directions interpolated along the great circle (glm::slerp on normalized vectors).
+// Unit directions interpolated along the great circle; two keys of the same direction
+// (or closer than float resolves an angle) hold it.
 glm::vec3 directionAt(const Track<glm::vec3>& track, int frame, glm::vec3 fallback);
+// v / |v|, computed without overflow or underflow in |v| (v is first divided by its largest
+// component, so [1e38, -1e38, 0] is (1, -1, 0)/√2); empty for a zero or non-finite v.
+std::optional<glm::vec3> unitDirection(glm::vec3 v);
 
 CameraDesc cameraAt(const Animation& animation, int frame);
 LightDesc lightAt(const Animation& animation, int frame);

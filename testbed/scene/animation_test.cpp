@@ -74,6 +74,43 @@ TEST(Animation, DirectionsFollowTheGreatCircle) {
   expectVec(directionAt(track, 20, glm::vec3(0)), {0, 1, 0});
 }
 
+// Two keys of one direction hold it at every frame between them (slerp alone divides by
+// the sine of a zero angle), and keys a hair apart still give unit vectors on the arc.
+TEST(Animation, EqualDirectionKeysHoldTheDirection) {
+  const glm::vec3 d = glm::normalize(glm::vec3(0.3946f, -0.8660f, 0.3069f));
+  Track<glm::vec3> same{{{0, d}, {47, d}}};
+  for (int frame : {0, 1, 23, 46, 47}) expectVec(directionAt(same, frame, glm::vec3(0)), d, 1e-7f);
+  const glm::vec3 near = glm::normalize(d + glm::vec3(1e-4f, 0, 0));
+  Track<glm::vec3> close{{{0, d}, {10, near}}};
+  const glm::vec3 mid = directionAt(close, 5, glm::vec3(0));
+  EXPECT_NEAR(glm::length(mid), 1.0f, 1e-6f);
+  expectVec(mid, glm::normalize(d + near), 1e-6f);
+}
+
+TEST(Animation, UnitDirectionNeitherOverflowsNorUnderflows) {
+  const float half = std::sqrt(0.5f);
+  expectVec(*unitDirection({1e38f, -1e38f, 0}), {half, -half, 0});
+  expectVec(*unitDirection({3e-39f, 0, -3e-39f}), {half, 0, -half});  // denormal components
+  expectVec(*unitDirection({0, -5, 0}), {0, -1, 0});
+  EXPECT_FALSE(unitDirection({0, 0, 0}));
+  EXPECT_FALSE(unitDirection({std::numeric_limits<float>::infinity(), 0, 0}));
+  EXPECT_FALSE(unitDirection({std::numeric_limits<float>::quiet_NaN(), 1, 0}));
+}
+
+// A whole scene: keys of the same direction, or of a direction with huge components, play
+// every frame with the direction the keys give.
+TEST(Animation, EqualOrHugeDirectionKeysPlayEveryFrame) {
+  for (const json& second : {json{1, 0, 0}, json{1e38, 0, 0}, json{2e-40, 0, 0}}) {
+    json document = animatedScene();
+    document["animation"]["light"][1]["direction"] = second;
+    Scene scene = parse(document);
+    for (int frame = 0; frame <= 20; ++frame) {
+      applyFrame(scene, frame);
+      expectVec(scene.light.direction, {1, 0, 0}, 1e-6f);
+    }
+  }
+}
+
 TEST(Animation, SceneIsItsFirstFrameAndApplyFrameMovesWhatIsKeyed) {
   Scene scene = parse(animatedScene());
   ASSERT_TRUE(scene.animation);
@@ -194,6 +231,9 @@ TEST(AnimationHostile, RefusesBadBlocksNamingTheKeyPath) {
   // Values that are valid one by one but not together.
   expectRefused([](json& d) { d["animation"]["light"][1]["direction"] = {-1, 0, 0}; },
                 "animation.light[1].direction", "opposite");
+  expectRefused([](json& d) { d["animation"]["light"][1]["direction"] = {0, 0, 0}; },
+                "animation.light[1].direction", "non-zero vector");
+  expectRefused([](json& d) { d["light"]["direction"] = {0, 0, 0}; }, "light.direction", "non-zero vector");
   expectRefused([](json& d) { d["animation"]["camera"][1]["eye"] = {0, 0, 0}; }, "animation.camera.target",
                 "(at frame 14)");
   expectRefused(

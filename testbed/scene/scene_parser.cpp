@@ -192,6 +192,13 @@ class Parser {
     return v;
   }
 
+  // A direction: any non-zero vector of finite floats, made unit.
+  glm::vec3 direction(const json& value, const Key& key) const {
+    const std::optional<glm::vec3> unit = unitDirection(vec3(value, key));
+    if (!unit) fail(key, "must be a non-zero vector, got " + show(value));
+    return *unit;
+  }
+
   // A fixed-length list of positive sizes, e.g. a plane's [x, z].
   std::vector<float> sizes(const json& value, const Key& key, std::size_t n,
                            const char* form) const {
@@ -306,9 +313,7 @@ class Parser {
     } else if (type == "directional") {
       checkKeys(value, key, {"type", "direction", "target", "extent", "radius", "fit"});
       light.type = LightType::Directional;
-      const glm::vec3 direction = vec3(require(value, key, "direction"), key / "direction");
-      if (!(glm::length(direction) > 0.0f)) fail(key / "direction", "must be a non-zero vector");
-      light.direction = glm::normalize(direction);
+      light.direction = direction(require(value, key, "direction"), key / "direction");
       light.target = glm::vec3(0.0f);
       if (const json* target = find(value, "target")) light.target = vec3(*target, key / "target");
       // Without an extent the square is fitted to the scene, which needs fitting on.
@@ -589,9 +594,7 @@ class Parser {
       if (find(k, "fov")) n += add(a.lightFov, frame, optional(k, kk, "fov", 45.0, 0.0, 180.0));
       if (const json* v = find(k, "extent")) n += add(a.lightExtent, frame, positive(*v, kk / "extent"));
       if (const json* v = find(k, "direction")) {
-        const glm::vec3 d = vec3(*v, kk / "direction");
-        if (!(glm::length(d) > 0.0f)) fail(kk / "direction", "must be a non-zero vector");
-        const glm::vec3 unit = glm::normalize(d);
+        const glm::vec3 unit = direction(*v, kk / "direction");
         // Opposite directions have no one great circle between them.
         if (!a.lightDirection.empty() && glm::dot(a.lightDirection.keys.back().second, unit) < -0.9999f)
           fail(kk / "direction", "is opposite to the previous key's: the great circle between them is undefined");
