@@ -186,11 +186,9 @@ def main(argv):
     parser.add_argument("--no-plot", action="store_true", help="skip the plots")
     args = parser.parse_args(argv)
     try:
-            try:
-            error_metric = metric_table.metric(args.error)
-        except metric_table.MetricTableError as error:
-            raise InputError(f"--error: {error}") from error
-        if error_metric["reference"] == "none":
+        if args.error not in metric_table.ids():
+            raise InputError(f"--error: no metric '{args.error}' in the testbed's metric table")
+        if metric_table.metric(args.error)["reference"] == "none":
             raise InputError(f"--error: {args.error} is not an error metric")
         scenes, flagged = organise(load_records(args.records, with_derived=True), args.error)
         if not scenes:

@@ -202,13 +202,13 @@ def analyse(table, baseline):
     results = {}
     for m in metric_table.error_metrics():
         name, per_label = m["id"], {}
+        base = {s: metric_table.value(r, name) for s, r in table.get(baseline, {}).items()}
         for label in sorted(table):
             scenes = {s: metric_table.value(r, name) for s, r in table[label].items()}
             scenes = {s: v for s, v in scenes.items() if v is not None and math.isfinite(v)}
             if not scenes:
                 continue
             entry = {"summary": summary(list(scenes.values())), "scenes": scenes}
-            base = {s: metric_table.value(r, name) for s, r in table.get(baseline, {}).items()}
             common = sorted(s for s in scenes if base.get(s) is not None)
             if label != baseline and common:
                 entry["vs_baseline"] = paired([scenes[s] for s in common], [base[s] for s in common])
@@ -395,7 +395,8 @@ def main(argv):
         handle.write(findings_markdown(sentences, args.baseline) + "\n")
     with open(os.path.join(args.out, "stats.json"), "w", encoding="utf-8") as handle:
         json.dump({"baseline": args.baseline, "shadow_map": args.shadow_map, "excluded": flagged, "notes": notes,
-                   "alpha": ALPHA, "metrics": results, "findings": sentences}, handle, indent=1, sort_keys=True)
+                   "alpha": ALPHA, "metrics": results,
+                   "findings": [{"metric": name, "sentences": lines} for name, lines in sentences.items()]}, handle, indent=1, sort_keys=True)
         handle.write("\n")
     if not args.no_plot:
         plot(results, args.out)

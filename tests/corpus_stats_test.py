@@ -7,6 +7,7 @@ and the script on a small synthetic record set writes its tables and plots. docs
 quotes results/corpus's generated findings as they stand."""
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -143,7 +144,7 @@ class Script(unittest.TestCase):
             pcf = result["metrics"]["mismatch_pct"]["pcf"]
             self.assertAlmostEqual(pcf["summary"]["median"], 0.5 + 0.4 * 2)
             self.assertEqual(pcf["vs_baseline"]["win_rate"], 1.0)
-            self.assertEqual(list(result["findings"]), ["mismatch_pct", "edge_mismatch_pct", "rmse", "leak_pct",
+            self.assertEqual([f["metric"] for f in result["findings"]], ["mismatch_pct", "edge_mismatch_pct", "rmse", "leak_pct",
                                                         "overestimation_pct", "boundary_px.mean", "boundary_px.p95"])
             with open(os.path.join(out, "findings.md")) as handle:
                 self.assertIn("- **pcf** against sm, N = 5 paired scenes: two-sided Wilcoxon", handle.read())
@@ -170,6 +171,25 @@ class Script(unittest.TestCase):
             self.assertEqual(run.returncode, 2)
             self.assertEqual(run.stderr.count("\n"), 1, run.stderr)
             self.assertIn("missing: no such file or folder", run.stderr)
+
+
+class DocsQuoteTheFindings(unittest.TestCase):
+    def test_every_quoted_line_is_a_generated_one(self):
+        # docs/corpus.md "What results/corpus shows": between <!-- findings: FILE --> and
+        # <!-- end findings -->, only lines of FILE as scripts/corpus_stats.py wrote it.
+        root = os.path.join(HERE, "..")
+        with open(os.path.join(root, "docs", "corpus.md"), encoding="utf-8") as handle:
+            doc = handle.read()
+        blocks = re.findall(r"<!-- findings: (\S+) -->\n(.*?)<!-- end findings -->", doc, re.S)
+        self.assertEqual(len(blocks), 2)
+        for file, quoted in blocks:
+            with open(os.path.join(root, file), encoding="utf-8") as handle:
+                generated = set(handle.read().splitlines())
+            lines = quoted.strip().splitlines()
+            self.assertGreater(len(lines), 3, file)
+            for line in lines:
+                self.assertIn(line, generated, file)
+        self.assertNotIn("exact, N = 40", doc)
 
 
 if __name__ == "__main__":

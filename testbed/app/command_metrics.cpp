@@ -1,7 +1,6 @@
 // `testbed metrics [--json] [--derive FILE]`: the metric table (harness/metric_table.h) for
 // the scripts and people that read records, and the derived figures of records written
 // before records carried them.
-#include <algorithm>
 #include <iomanip>
 #include <iostream>
 
@@ -37,14 +36,9 @@ constexpr std::string_view kSeriesSummaries[] = {"mean", "p95", "max"};
 
 json metricJson(const Metric& m) {
   const std::string path = recordPath(m);
-  json summaries = json::array(), from = json::array();
+  json summaries = json::array();
   if (!m.path.empty())
     for (std::string_view s : kSeriesSummaries) summaries.push_back(s);
-  for (std::size_t at = 0; at < m.from.size();) {
-    const std::size_t end = std::min(m.from.find(' ', at), m.from.size());
-    from.push_back(m.from.substr(at, end - at));
-    at = end + 1;
-  }
   return {{"id", m.name},
           {"heading", m.heading},
           {"brief", m.brief},
@@ -56,7 +50,7 @@ json metricJson(const Metric& m) {
           {"reference", m.reference == MetricReference::None ? "none" : referenceName(m.reference)},
           {"path", path.empty() ? json(nullptr) : json(path)},
           {"derived", !m.from.empty()},
-          {"from", from},
+          {"from", inputsOf(m)},
           // A ratio to the baseline technique's record, which no single record holds.
           {"relative_to", path.empty() ? json("sm") : json(nullptr)},
           {"integer", m.integer},
@@ -122,7 +116,7 @@ CommandRunner addMetricsCommand(CLI::App& app) {
     }
     for (const Metric& m : metricTable()) {
       const std::string path = recordPath(m);
-      std::cout << std::left << std::setw(28) << m.name << std::setw(8) << m.unit() << std::setw(8)
+      std::cout << std::left << std::setw(28) << m.name << std::setw(15) << m.unit() << std::setw(8)
                 << (m.better == Better::Lower ? "lower" : "higher") << std::setw(6)
                 << (m.reference == MetricReference::None ? "-" : referenceName(m.reference)) << " "
                 << (path.empty() ? "ratio to sm" : path) << "\n";

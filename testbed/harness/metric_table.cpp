@@ -1,5 +1,6 @@
 #include "testbed/harness/metric_table.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -155,6 +156,16 @@ std::string recordPath(const Metric& m) {
   if (!m.path.empty()) return std::string(m.path);
   if (m.check == CheckRule::Work) return "/work/total/" + std::string(m.name);  // record.cpp countsJson
   return m.shownIn(kCarried) ? "/derived/" + std::string(m.name) : std::string();
+}
+
+std::vector<std::string_view> inputsOf(const Metric& m) {
+  std::vector<std::string_view> out;
+  for (std::size_t at = 0; at < m.from.size();) {
+    const std::size_t end = std::min(m.from.find(' ', at), m.from.size());
+    out.push_back(m.from.substr(at, end - at));
+    at = end + 1;
+  }
+  return out;
 }
 
 std::vector<std::string_view> useNames(unsigned uses) {

@@ -79,7 +79,9 @@ struct Metric {
 // counter, "/derived/<name>" for a carried derived figure, empty for a ratio to the
 // baseline `sm` (no record holds it).
 std::string recordPath(const Metric& m);
-// The names of kMetricUse flags, as `testbed metrics --json` lists them.
+// The names in a derived figure's `from`, in order; none for a stored figure.
+std::vector<std::string_view> inputsOf(const Metric& m);
+// The names of MetricUse flags, as `testbed metrics --json` lists them.
 std::vector<std::string_view> useNames(unsigned uses);
 
 std::span<const Metric> metricTable();
