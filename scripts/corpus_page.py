@@ -162,7 +162,8 @@ def main(argv):
     notes.append(f"Corpus: {len(manifest.get('scenes', []))} scenes, seed {manifest.get('seed')} (scenes/manifest.json).")
     added = stats_sections(folder, stats, shown) + [scenes_section(records, stats)] + cost_sections(cost)
     added.append({"type": "links", "title": "Corpus files", "items": [
-        {"text": t, "href": h} for t, h in [("stats/stats.md", "stats/stats.md"), ("stats/stats.json", "stats/stats.json"),
+        {"text": t, "href": h} for t, h in [("stats/findings.md (the findings as sentences)", "stats/findings.md"),
+                                             ("stats/stats.md", "stats/stats.md"), ("stats/stats.json", "stats/stats.json"),
                                              ("stats-all-maps/stats.md (every map size, against sm at the largest)",
                                               "stats-all-maps/stats.md"),
                                              ("cost/cost.md", "cost/cost.md"), ("cost/cost.json", "cost/cost.json"),
