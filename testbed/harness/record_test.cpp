@@ -67,7 +67,7 @@ TEST(Record, CommittedRecordsRoundTripByteForByte) {
         for (const char* label : {"row", "column", "entries"})
           if (parsed[i].contains(label)) written.back()[label] = parsed[i][label];
         // Records written before records carried their derived figures lack the block
-        // (docs/record.md "derived"); the writer adds it, computed from the stored figures.
+        // (docs/record.md "The record": `derived`); the writer adds it from the stored figures.
         if (!parsed[i].contains("derived")) written.back().erase("derived");
       }
       // Compared line by line: a failure names the first differing line rather than asking
