@@ -19,31 +19,15 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from corpus_stats import REFERENCES, InputError, load_records, lookup  # noqa: E402
+import metric_table  # noqa: E402
+from corpus_stats import REFERENCES, InputError, load_records  # noqa: E402
+
+# The costs, as derived figures the records carry (computed by the testbed, never here).
+COSTS = ["frame_ms", "memory_mb", "invocations_k"]
 
 
-def frame_ms(record):
-    """The whole frame in the record's own measure: G-buffer plus the technique's passes."""
-    timed = lookup(record, (record.get("timing", "gpu") + "_ms", "total"))
-    gbuffer = lookup(record, ("gbuffer_ms",))
-    return None if timed is None or gbuffer is None else timed + gbuffer
-
-
-def memory_mb(record):
-    count = lookup(record, ("memory_bytes",))
-    return None if count is None else count / (1024.0 * 1024.0)
-
-
-def invocations_k(record):
-    work = record.get("work")
-    if not isinstance(work, dict) or not isinstance(work.get("total"), dict):
-        return None
-    total = work["total"]
-    return sum(total.get(k, 0) for k in ("vertex_invocations", "fragment_invocations", "compute_invocations")) / 1000.0
-
-
-COSTS = [("frame_ms", "frame time, ms", frame_ms), ("memory_mb", "memory, MB", memory_mb),
-         ("invocations_k", "shader invocations, thousands", invocations_k)]
+def cost_title(cost):
+    return metric_table.metric(cost)["heading"]
 
 
 def configuration(record):
@@ -52,7 +36,7 @@ def configuration(record):
     return f"{label} @{record.get('shadow_map')}"
 
 
-def organise(records, error_path):
+def organise(records, error_name):
     """{scene: {config: {"technique", "error", cost...}}} and the flagged scenes."""
     scenes, flagged = {}, {}
     for record in records:
@@ -61,12 +45,12 @@ def organise(records, error_path):
         if record["error"].get("flag"):
             flagged[record["scene"]] = record["error"]["flag"]
             continue
-        error = lookup(record, error_path)
+        error = metric_table.value(record, error_name)
         if error is None:
             continue
         point = {"technique": record["technique"], "error": error}
-        for name, _, cost in COSTS:
-            point[name] = cost(record)
+        for name in COSTS:
+            point[name] = metric_table.value(record, name)
         scenes.setdefault(record["scene"], {})[configuration(record)] = point
     for scene in flagged:
         scenes.pop(scene, None)
@@ -198,22 +182,25 @@ def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("records", nargs="+", help="a sweep's records.json, or folders holding them")
     parser.add_argument("--out", required=True, help="folder for cost.md, cost.json and the plots")
-    parser.add_argument("--error", default="mismatch_pct", help="error metric of the record's error block")
+    parser.add_argument("--error", default="mismatch_pct", help="error metric (an id of `testbed metrics`)")
     parser.add_argument("--no-plot", action="store_true", help="skip the plots")
     args = parser.parse_args(argv)
     try:
-        path = ("error",) + tuple(args.error.replace("boundary_px.", "boundary_px/").split("/"))
-        scenes, flagged = organise(load_records(args.records), path)
+        if args.error not in metric_table.ids():
+            raise InputError(f"--error: no metric '{args.error}' in the testbed's metric table")
+        if metric_table.metric(args.error)["reference"] == "none":
+            raise InputError(f"--error: {args.error} is not an error metric")
+        scenes, flagged = organise(load_records(args.records, with_derived=True), args.error)
         if not scenes:
             raise InputError(f"--error: no technique record has error.{args.error} (besides references and flagged scenes)")
-    except InputError as error:
+    except (InputError, metric_table.MetricTableError) as error:
         print(f"corpus_cost: {error}", file=sys.stderr)
         return 2
     tables = []
-    for cost_name, title, _ in COSTS:
+    for cost_name in COSTS:
         medians = corpus_medians(scenes, cost_name)
         if medians:
-            tables.append((cost_name, title, equal_cost_table(scenes, medians, cost_name)))
+            tables.append((cost_name, cost_title(cost_name), equal_cost_table(scenes, medians, cost_name)))
     os.makedirs(args.out, exist_ok=True)
     with open(os.path.join(args.out, "cost.md"), "w", encoding="utf-8") as handle:
         handle.write(markdown(tables, args.error, flagged, len(scenes)) + "\n")

@@ -16,9 +16,10 @@ import os
 import re
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import metric_table  # noqa: E402
+
 DATA = re.compile(r'(<script type="application/json" id="page-data">)(.*?)(</script>)', re.S)
-SHOWN_METRICS = ["mismatch_pct", "edge_mismatch_pct", "rmse", "boundary_mean_px", "boundary_p95_px", "leak_pct",
-                 "overestimation_pct", "soft_rmse"]
 
 
 class InputError(Exception):
@@ -51,10 +52,11 @@ def read_json(path):
         raise InputError(f"{path}: {error}") from error
 
 
-def stats_sections(folder, stats):
+def stats_sections(folder, stats, shown):
+    """The statistics' tables of the metrics `shown` (ids, in the metric table's order)."""
     sections = []
     excluded = stats.get("excluded", {})
-    for metric in SHOWN_METRICS:
+    for metric in shown:
         per_label = stats["metrics"].get(metric)
         if not per_label:
             continue
@@ -112,8 +114,8 @@ def scenes_section(records, stats, metric="mismatch_pct"):
 
 def cost_sections(cost):
     sections = []
-    titles = {"frame_ms": "frame time, ms", "memory_mb": "memory, MB", "invocations_k": "shader invocations, thousands"}
     for name, rows in cost.get("tables", {}).items():
+        heading = metric_table.metric(name)["heading"]
         body = [{"cells": [cell(r["budget"]), cell(str(r["n"]), r["n"]), cell(number(r["budget_cost"]), r["budget_cost"]),
                            cell(number(r["budget_error"]), r["budget_error"]), cell(r["best"]),
                            cell(number(r["best_cost"]), r["best_cost"]), cell(number(r["best_error"]), r["best_error"]),
@@ -121,13 +123,13 @@ def cost_sections(cost):
                            cell("–" if r["scene_winner_share"] is None else f"{100 * r['scene_winner_share']:.0f} %",
                                 r["scene_winner_share"])]} for r in rows]
         sections.append(table(
-            f"At equal cost ({titles.get(name, name)})",
+            f"At equal cost ({heading})",
             [f"Error: {cost['error']}, over {cost['scenes']} scenes. For each configuration as the budget: the one "
              "with the least median error at no more median cost, and the one that wins most often scene by scene. "
              "cost/cost.md holds the same tables; cost/scenes/ the plot of every scene."],
             [("budget", False), ("N", True), ("its cost", True), ("its error", True), ("least error at no more cost", False),
              ("cost", True), ("error", True), ("wins most scenes", False), ("share", True)], body))
-        sections.append({"type": "figure", "title": f"Error against {titles.get(name, name)}: each technique's Pareto front",
+        sections.append({"type": "figure", "title": f"Error against {heading}: each technique's Pareto front",
                          "src": f"cost/cost-{name}.png", "href": f"cost/cost-{name}.png"})
     return sections
 
@@ -148,7 +150,8 @@ def main(argv):
         stats = read_json(os.path.join(folder, "stats", "stats.json"))
         cost = read_json(os.path.join(folder, "cost", "cost.json"))
         records = read_json(os.path.join(folder, "records.json"))
-    except (InputError, ValueError) as error:
+        shown = [m["id"] for m in metric_table.error_metrics()]
+    except (InputError, ValueError, metric_table.MetricTableError) as error:
         print(f"corpus_page: {error}", file=sys.stderr)
         return 2
     manifest = read_json(os.path.join(folder, "scenes", "manifest.json"))
@@ -157,9 +160,10 @@ def main(argv):
         with open(os.path.join(folder, "command.txt"), encoding="utf-8") as f:
             notes += [line.strip() for line in f if line.strip()]
     notes.append(f"Corpus: {len(manifest.get('scenes', []))} scenes, seed {manifest.get('seed')} (scenes/manifest.json).")
-    added = stats_sections(folder, stats) + [scenes_section(records, stats)] + cost_sections(cost)
+    added = stats_sections(folder, stats, shown) + [scenes_section(records, stats)] + cost_sections(cost)
     added.append({"type": "links", "title": "Corpus files", "items": [
-        {"text": t, "href": h} for t, h in [("stats/stats.md", "stats/stats.md"), ("stats/stats.json", "stats/stats.json"),
+        {"text": t, "href": h} for t, h in [("stats/findings.md (the findings as sentences)", "stats/findings.md"),
+                                             ("stats/stats.md", "stats/stats.md"), ("stats/stats.json", "stats/stats.json"),
                                              ("stats-all-maps/stats.md (every map size, against sm at the largest)",
                                               "stats-all-maps/stats.md"),
                                              ("cost/cost.md", "cost/cost.md"), ("cost/cost.json", "cost/cost.json"),

@@ -11,6 +11,9 @@ import json
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import metric_table  # noqa: E402
+
 results = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "results")
 
 
@@ -35,14 +38,14 @@ def agreement_table():
     print("| scene | technique | mismatch % GPU | mismatch % llvmpipe | boundary px GPU | boundary px llvmpipe |")
     print("|---|---|---:|---:|---:|---:|")
     for scene in sorted(os.listdir(os.path.join(results, "gpu/compare"))):
-        ours = {r["technique"]: r["error"] for r in records(os.path.join(results, "gpu/compare", scene, "metrics.egl.json"))}
-        cpu = {r["technique"]: r["error"] for r in records(os.path.join(results, scene, "metrics.json"))}
+        ours = {r["technique"]: r for r in records(os.path.join(results, "gpu/compare", scene, "metrics.egl.json"))}
+        cpu = {r["technique"]: r for r in records(os.path.join(results, scene, "metrics.json"))}
         for technique in sorted(ours):
             if technique == "groundtruth" or technique not in cpu:
                 continue
-            g, c = ours[technique], cpu[technique]
-            print(f"| {scene} | {technique} | {g['mismatch_pct']:.3f} | {c['mismatch_pct']:.3f} | "
-                  f"{g['boundary_px']['mean']:.3f} | {c['boundary_px']['mean']:.3f} |")
+            cells = [metric_table.value(r[technique], name) for name in ("mismatch_pct", "boundary_px.mean")
+                     for r in (ours, cpu)]
+            print(f"| {scene} | {technique} | " + " | ".join(f"{v:.3f}" for v in cells) + " |")
 
 
 if __name__ == "__main__":

@@ -3,7 +3,8 @@
 (docs/motion.md, "Temporal metrics").
 
 Input: a JSON list of per-frame records, each with "technique", "frame" and the "error"
-block of a metrics.json record (mismatch_pct, rmse, boundary_px.mean), and, from the
+block of a metrics.json record (the metrics PLOTTED names, read where the metric table of
+`testbed metrics --json` says), and, from the
 second frame of a run on, "temporal": {"flicker": ...} for the pair (previous frame,
 this frame). Panels: mismatch %, RMSE and boundary px over frames; the top one's second
 axis: flicker per frame pair (plotted at the pair's later frame). Uses Debian's python3-matplotlib.
@@ -22,13 +23,17 @@ matplotlib.use("Agg")  # headless
 matplotlib.rcParams["text.parse_math"] = False
 import matplotlib.pyplot as plt  # noqa: E402
 
-# (key path in a record, legend label, line style); the left axis's series.
-ERROR_SERIES = [
-    (("error", "mismatch_pct"), "mismatch %", "-"),
-    (("error", "rmse"), "RMSE", "--"),
-    (("error", "boundary_px", "mean"), "boundary px (mean)", ":"),
-]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import metric_table  # noqa: E402
+
+# (metric id, line style): one panel each; the keys and labels are the metric table's.
+PLOTTED = [("mismatch_pct", "-"), ("rmse", "--"), ("boundary_px.mean", ":")]
 FLICKER = ("temporal", "flicker")
+
+
+def error_series():
+    """(key path in a record, label, line style) of each plotted metric."""
+    return [(metric_table.path_keys(name), metric_table.metric(name)["heading"], style) for name, style in PLOTTED]
 
 
 class InputError(Exception):
@@ -67,7 +72,7 @@ def read_series(path):
         if not isinstance(technique, str) or not technique or "/" in technique:
             raise InputError(where + "/technique: expected a technique id")
         frame = number(record, ("frame",), where)
-        values = {label: number(record, key, where) for key, label, _ in ERROR_SERIES}
+        values = {label: number(record, key, where) for key, label, _ in error_series()}
         flicker = number(record, FLICKER, where, required=False)
         series.setdefault(technique, []).append((frame, values, flicker))
     for points in series.values():
@@ -79,8 +84,9 @@ def plot(technique, points, out_file):
     """One panel per error series (their units differ), frames shared; the top panel
     carries the flicker per frame pair on its second axis."""
     frames = [p[0] for p in points]
-    figure, axes = plt.subplots(len(ERROR_SERIES), 1, sharex=True, figsize=(8, 6.5), dpi=100)
-    for axis, (_, label, style) in zip(axes, ERROR_SERIES):
+    series = error_series()
+    figure, axes = plt.subplots(len(series), 1, sharex=True, figsize=(8, 6.5), dpi=100)
+    for axis, (_, label, style) in zip(axes, series):
         axis.plot(frames, [p[1][label] for p in points], style, color="tab:blue", marker=".", label=label)
         axis.set_ylabel(label, color="tab:blue")
         axis.grid(alpha=0.3)
@@ -113,6 +119,9 @@ def main(argv):
         series = read_series(path)
     except InputError as e:
         sys.stderr.write(path + str(e) + "\n")
+        return 2
+    except metric_table.MetricTableError as e:
+        sys.stderr.write(f"motion_plot.py: {e}\n")
         return 2
     for technique, points in sorted(series.items()):
         plot(technique, points, os.path.join(out_dir, technique + "_error_over_time.png"))

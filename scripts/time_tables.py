@@ -12,29 +12,32 @@ import json
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import metric_table  # noqa: E402
+
 
 def load(root, scene):
+    """The scene's records by technique, each with the derived figures the testbed
+    computes (technique_ms, x_sm against the file's sm)."""
     path = os.path.join(root, scene, "metrics.json")
     try:
         with open(path) as f:
             records = json.load(f)
-    except (OSError, ValueError) as e:
+        metric_table.attach_derived(path, records)
+    except (OSError, ValueError, metric_table.MetricTableError) as e:
         sys.exit(f"time_tables.py: {path}: {e}")
     return {r["technique"]: r for r in records}
 
 
-def measure(record):
-    return record["wall_ms"] if record.get("timing") == "wall" else record["gpu_ms"]
-
-
 def ratio(records, technique):
-    return measure(records[technique])["total"] / measure(records["sm"])["total"]
+    return metric_table.value(records[technique], "x_sm")
 
 
 def passes(record):
-    m = measure(record)
-    parts = sorted(m["passes"].items(), key=lambda kv: -kv[1])
-    return ", ".join(f"{name} {ms:.1f}" for name, ms in parts) + f" = {m['total']:.1f} ms"
+    # The passes of the measure the record's "timing" names, which technique_ms totals.
+    parts = sorted(record[record["timing"] + "_ms"]["passes"].items(), key=lambda kv: -kv[1])
+    total = metric_table.value(record, "technique_ms")
+    return ", ".join(f"{name} {ms:.1f}" for name, ms in parts) + f" = {total:.1f} ms"
 
 
 def main(argv):

@@ -1,9 +1,13 @@
 #!/usr/bin/python3
 """scripts/corpus_stats.py pinned on known answers: a bootstrap interval on a known
 distribution covers its mean, the Wilcoxon test on a textbook case gives its exact p,
-and the script on a small synthetic record set writes its tables and plots."""
+Holm's adjustment on a worked case, the findings' sentences on planted cases (ties and
+zero differences force the approximation; median and paired ratio disagreeing is said),
+and the script on a small synthetic record set writes its tables and plots. docs/corpus.md
+quotes results/corpus's generated findings as they stand."""
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -42,7 +46,14 @@ class KnownAnswers(unittest.TestCase):
         d = np.array([6, 8, 14, 16, 23, 24, 28, 29, 41, -48, 49, 56, 60, -67, 75], dtype=float)
         baseline = np.full(d.size, 100.0)
         self.assertAlmostEqual(corpus_stats.wilcoxon_p(baseline + d, baseline), 0.041259765625, places=12)
+        test = corpus_stats.wilcoxon(baseline + d, baseline)
+        self.assertEqual((test["method"], test["w_plus"], test["w_minus"]), ("exact", 96.0, 24.0))
         self.assertIsNone(corpus_stats.wilcoxon_p(baseline, baseline))
+
+    def test_holm_on_a_worked_case(self):
+        # m = 4: 0.005·4 = 0.02, 0.01·3 = 0.03, 0.03·2 = 0.06, 0.04·1 = 0.04 → 0.06 (monotone).
+        self.assertEqual(corpus_stats.holm([0.01, 0.04, 0.03, 0.005]), [0.03, 0.06, 0.06, 0.02])
+        self.assertEqual(corpus_stats.holm([None, 0.02, 0.9]), [None, 0.04, 0.9])
 
     def test_paired_comparison(self):
         result = corpus_stats.paired([1.0, 4.0, 2.0, 0.0], [2.0, 2.0, 2.0, 0.0])
@@ -50,6 +61,54 @@ class KnownAnswers(unittest.TestCase):
         self.assertAlmostEqual(result["win_rate"], (1 + 0.5 + 0.5) / 4)
         self.assertEqual(result["ratio_n"], 3)  # the baseline's 0 leaves the ratio undefined
         self.assertAlmostEqual(result["median_ratio"], 1.0)
+
+
+MISMATCH = {"id": "mismatch_pct", "better": "lower"}
+
+
+def compared(values, baseline, holm_p=None, techniques=1):
+    v = corpus_stats.paired(values, baseline)
+    v["holm_p"] = v["wilcoxon_p"] if holm_p is None else holm_p
+    v["holm_m"] = techniques
+    return v
+
+
+class Findings(unittest.TestCase):
+    def test_ties_and_zero_differences_force_the_approximation_and_are_counted(self):
+        baseline = np.arange(1.0, 11.0)
+        d = np.array([0, 0, 0.5, 0.5, -0.5, 1, 2, 3, 4, 5])
+        v = compared(baseline + d, baseline)
+        self.assertEqual(v["wilcoxon"]["method"], "approx")
+        self.assertAlmostEqual(v["wilcoxon_p"], float(corpus_stats.stats.wilcoxon(d, method="approx").pvalue))
+        sentence = corpus_stats.finding("pcf", "sm", MISMATCH, v)
+        self.assertIn("normal approximation with tie correction (2 zero differences, 3 tied absolute differences; "
+                      "8 differences ranked)", sentence)
+        self.assertNotIn("exact", sentence)
+
+    def test_untied_differences_are_tested_exactly(self):
+        baseline = np.full(15, 100.0)
+        d = np.array([6, 8, 14, 16, 23, 24, 28, 29, 41, -48, 49, 56, 60, -67, 75], dtype=float)
+        sentence = corpus_stats.finding("pcf", "sm", MISMATCH, compared(baseline + d, baseline))
+        self.assertIn("two-sided Wilcoxon signed-rank test, exact (no zero or tied differences), W+ = 96, W− = 24, "
+                      "p = 0.0413, Holm-adjusted over 1 technique p = 0.0413: evidence at α = 0.05 that its "
+                      "mismatch_pct is higher (worse) than sm's.", sentence)
+        self.assertIn("Median, mean and paired ratio agree: higher (worse)", sentence)
+
+    def test_median_and_paired_ratio_disagreeing_is_said(self):
+        # Three large-error scenes 10 % lower, four small ones mixed: the per-scene ratio's
+        # median is 0.9 and the mean falls, while the median over scenes rises 1 → 2.
+        baseline = np.array([10, 10, 10, 1, 1, 1, 1], dtype=float)
+        values = np.array([9, 9, 9, 2, 2, 0.9, 0.9])
+        v = compared(values, baseline, holm_p=0.5, techniques=13)
+        sentence = corpus_stats.finding("msm", "sm", MISMATCH, v)
+        self.assertIn("Holm-adjusted over 13 techniques p = 0.5: no evidence of a difference at α = 0.05.", sentence)
+        self.assertIn("The effect measures disagree: mean and paired ratio lower; median higher (lower is better): "
+                      "median 2 against 1, mean 4.69 against 4.86, median per-scene ratio 0.9 over 7 scenes, "
+                      "win rate 71 %.", sentence)
+
+    def test_all_equal_has_nothing_to_test(self):
+        sentence = corpus_stats.finding("esm", "sm", MISMATCH, compared([1.0, 2.0], [1.0, 2.0]))
+        self.assertIn("every scene's mismatch_pct equals sm's", sentence)
 
 
 def record(technique, scene, mismatch, flag=None):
@@ -85,7 +144,11 @@ class Script(unittest.TestCase):
             pcf = result["metrics"]["mismatch_pct"]["pcf"]
             self.assertAlmostEqual(pcf["summary"]["median"], 0.5 + 0.4 * 2)
             self.assertEqual(pcf["vs_baseline"]["win_rate"], 1.0)
-            for name in ("mismatch_pct", "rmse", "boundary_p95_px"):
+            self.assertEqual([f["metric"] for f in result["findings"]], ["mismatch_pct", "edge_mismatch_pct", "rmse", "leak_pct",
+                                                        "overestimation_pct", "boundary_px.mean", "boundary_px.p95"])
+            with open(os.path.join(out, "findings.md")) as handle:
+                self.assertIn("- **pcf** against sm, N = 5 paired scenes: two-sided Wilcoxon", handle.read())
+            for name in ("mismatch_pct", "rmse", "boundary_px.p95"):
                 self.assertGreater(os.path.getsize(os.path.join(out, f"{name}.png")), 1000)
             self.assertFalse(os.path.exists(os.path.join(out, "soft_rmse.png")))  # no values: no plot
 
@@ -108,6 +171,25 @@ class Script(unittest.TestCase):
             self.assertEqual(run.returncode, 2)
             self.assertEqual(run.stderr.count("\n"), 1, run.stderr)
             self.assertIn("missing: no such file or folder", run.stderr)
+
+
+class DocsQuoteTheFindings(unittest.TestCase):
+    def test_every_quoted_line_is_a_generated_one(self):
+        # docs/corpus.md "What results/corpus shows": between <!-- findings: FILE --> and
+        # <!-- end findings -->, only lines of FILE as scripts/corpus_stats.py wrote it.
+        root = os.path.join(HERE, "..")
+        with open(os.path.join(root, "docs", "corpus.md"), encoding="utf-8") as handle:
+            doc = handle.read()
+        blocks = re.findall(r"<!-- findings: (\S+) -->\n(.*?)<!-- end findings -->", doc, re.S)
+        self.assertEqual(len(blocks), 2)
+        for file, quoted in blocks:
+            with open(os.path.join(root, file), encoding="utf-8") as handle:
+                generated = set(handle.read().splitlines())
+            lines = quoted.strip().splitlines()
+            self.assertGreater(len(lines), 3, file)
+            for line in lines:
+                self.assertIn(line, generated, file)
+        self.assertNotIn("exact, N = 40", doc)
 
 
 if __name__ == "__main__":

@@ -76,5 +76,7 @@ CommandRunner addConformCommand(CLI::App& app);
 CommandRunner addCorpusCommand(CLI::App& app);
 // `worst`: the worst-case search over one scene's light, camera and map size (docs/corpus.md).
 CommandRunner addWorstCommand(CLI::App& app);
+// `metrics`: the metric table as text or JSON, and derived figures of older records.
+CommandRunner addMetricsCommand(CLI::App& app);
 
 }  // namespace testbed

@@ -23,7 +23,8 @@ int main(int argc, char** argv) {
                                                   testbed::addMergeCommand(app),
                                                   testbed::addCorpusCommand(app),
                                                   testbed::addWorstCommand(app),
-                                                  testbed::addConformCommand(app)};
+                                                  testbed::addConformCommand(app),
+                                                  testbed::addMetricsCommand(app)};
 #ifdef TESTBED_WITH_VIEWER
   commands.push_back(testbed::addViewCommand(app));
 #endif

@@ -29,6 +29,10 @@ void runPythonScript(const std::string& name, const std::vector<std::string>& ar
   std::vector<char*> argv;
   for (auto& word : words) argv.push_back(word.data());
   argv.push_back(nullptr);
+  // The scripts read the metric table from the binary that runs them (scripts/metric_table.py).
+  std::error_code noLink;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", noLink);
+  if (!noLink) setenv("TESTBED", self.c_str(), 1);
   pid_t pid = 0;
   if (posix_spawnp(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
     throw std::runtime_error("cannot start " + python + " for " + script);

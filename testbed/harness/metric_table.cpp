@@ -1,5 +1,6 @@
 #include "testbed/harness/metric_table.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -59,22 +60,22 @@ const std::vector<Metric> kTable = {
      kReportColumn | kCounter, false, false, [](const Record& r, const Record*) -> Value { return r.wall.totalMs; },
      [](Record& r, double v) { r.wall.totalMs = v; }},
     // The technique's frame in the measure the record's `timing` names.
-    {"technique_ms", "", "ms", "", " ms", 2, CheckRule::None, 0, Better::Lower, kBrief, false, false,
-     [](const Record& r, const Record*) -> Value { return techniqueMs(r); }, nullptr},
+    {"technique_ms", "", "ms", "", " ms", 2, CheckRule::None, 0, Better::Lower, kBrief | kCarried, false, false,
+     [](const Record& r, const Record*) -> Value { return techniqueMs(r); }, nullptr, MetricReference::None, {}, "gpu_ms.total wall_ms.total"},
     {"x_sm", "", "× sm", "", "x sm", 2, CheckRule::Speed, 0, Better::Lower, kReportColumn | kBrief | kCounter, false,
      false,
      [](const Record& r, const Record* sm) -> Value { return sm ? ratio(techniqueMs(r), techniqueMs(*sm)) : std::nullopt; },
-     nullptr},
+     nullptr, MetricReference::None, {}, "technique_ms"},
     // The whole frame as the papers time it: the G-buffer pass plus the technique's.
     {"x_sm_frame", "", "× sm frame", "", "x sm frame", 2, CheckRule::None, 0, Better::Lower, kReportColumn | kCounter,
      false, false,
      [](const Record& r, const Record* sm) -> Value { return sm ? ratio(wholeFrameMs(r), wholeFrameMs(*sm)) : std::nullopt; },
-     nullptr},
-    {"frame_ms", "", "frame ms", "", " ms", 2, CheckRule::None, 0, Better::Lower, kSweepMeasure, false, false,
-     [](const Record& r, const Record*) -> Value { return wholeFrameMs(r); }, nullptr},
-    {"fps", "", "fps", "", " fps", 2, CheckRule::None, 0, Better::Higher, kSweepMeasure, false, false,
+     nullptr, MetricReference::None, {}, "frame_ms"},
+    {"frame_ms", "", "frame ms", "", " ms", 2, CheckRule::None, 0, Better::Lower, kSweepMeasure | kCarried, false, false,
+     [](const Record& r, const Record*) -> Value { return wholeFrameMs(r); }, nullptr, MetricReference::None, {}, "gbuffer_ms technique_ms"},
+    {"fps", "", "fps", "", " fps", 2, CheckRule::None, 0, Better::Higher, kSweepMeasure | kCarried, false, false,
      [](const Record& r, const Record*) -> Value { return wholeFrameMs(r) > 0 ? finite(1000.0 / wholeFrameMs(r)) : std::nullopt; },
-     nullptr},
+     nullptr, MetricReference::None, {}, "frame_ms"},
     {"cpu_ms", "/cpu_ms", "CPU ms", "", " ms", 1, CheckRule::None, 0, Better::Lower, kCounter, false, false,
      [](const Record& r, const Record*) -> Value { return r.cpuMs; }, [](Record& r, double v) { r.cpuMs = v; }},
     {"gbuffer_ms", "/gbuffer_ms", "G-buffer ms", "", " ms", 2, CheckRule::None, 0, Better::Lower, kNone, false, false,
@@ -82,10 +83,10 @@ const std::vector<Metric> kTable = {
     {"memory_bytes", "/memory_bytes", "memory bytes", "", " bytes", 0, CheckRule::Exact, 0, Better::Lower, kCounter, true,
      false, [](const Record& r, const Record*) -> Value { return double(r.memoryBytes); },
      [](Record& r, double v) { r.memoryBytes = std::uint64_t(v); }},
-    {"memory_kib", "", "memory KiB", "", " KiB", 0, CheckRule::None, 0, Better::Lower, kReportColumn, false, false,
-     [](const Record& r, const Record*) -> Value { return double(r.memoryBytes) / 1024.0; }, nullptr},
-    {"memory_mb", "", "memory MB", "", " MB", 2, CheckRule::None, 0, Better::Lower, kSweepMeasure, false, false,
-     [](const Record& r, const Record*) -> Value { return double(r.memoryBytes) / (1024.0 * 1024.0); }, nullptr},
+    {"memory_kib", "", "memory KiB", "", " KiB", 0, CheckRule::None, 0, Better::Lower, kReportColumn | kCarried, false, false,
+     [](const Record& r, const Record*) -> Value { return double(r.memoryBytes) / 1024.0; }, nullptr, MetricReference::None, {}, "memory_bytes"},
+    {"memory_mb", "", "memory MB", "", " MB", 2, CheckRule::None, 0, Better::Lower, kSweepMeasure | kCarried, false, false,
+     [](const Record& r, const Record*) -> Value { return double(r.memoryBytes) / (1024.0 * 1024.0); }, nullptr, MetricReference::None, {}, "memory_bytes"},
     // The work block's totals (docs/work-counters.md); check compares them pass by pass.
     {"vertex_invocations", "", "vertex invocations", "", " invocations", 0, CheckRule::Work, 0, Better::Lower,
      kCounter, true, true, workTotal<0>, nullptr},
@@ -98,47 +99,48 @@ const std::vector<Metric> kTable = {
     {"clipping_input_primitives", "", "clipping input primitives", "", " primitives", 0, CheckRule::Work, 0,
      Better::Lower, kCounter, true, true, workTotal<4>, nullptr},
     // The shader invocations of all three stages in thousands: report.md's one work column.
-    {"invocations_k", "", "invocations (k)", "", "k invocations", 1, CheckRule::None, 0, Better::Lower, kReportColumn,
-     false, true,
+    {"invocations_k", "", "invocations (k)", "", "k invocations", 1, CheckRule::None, 0, Better::Lower,
+     kReportColumn | kCarried, false, true,
      [](const Record& r, const Record*) -> Value {
        return r.work ? Value(double(r.work->total[0] + r.work->total[1] + r.work->total[2]) / 1000.0) : std::nullopt;
      },
-     nullptr},
+     nullptr, MetricReference::None, {}, "vertex_invocations fragment_invocations compute_invocations"},
     // The error block (docs/ground-truth-and-metrics.md "Error metrics"); floors: 0.01 percentage
     // points, 0.001 RMSE, 0.01 px.
     {"mismatch_pct", "/error/mismatch_pct", "mismatch %", "mismatch", "%", 3, CheckRule::Error, 0.01, Better::Lower,
      kReportColumn | kBrief, false, false, errorValue<&ErrorMetrics::mismatchPct>,
-     storeError<&ErrorMetrics::mismatchPct>, MetricReference::Hard},
+     storeError<&ErrorMetrics::mismatchPct>, MetricReference::Hard, "% of receivers in the wrong binary state"},
     {"edge_mismatch_pct", "/error/edge_mismatch_pct", "edge mismatch %", "edge mismatch", "%", 2, CheckRule::Error, 0.01,
      Better::Lower, kReportColumn, false, false, errorValue<&ErrorMetrics::edgeMismatchPct>,
-     storeError<&ErrorMetrics::edgeMismatchPct>, MetricReference::Hard},
+     storeError<&ErrorMetrics::edgeMismatchPct>, MetricReference::Hard, "% wrong within 3 px of a ground-truth boundary"},
     {"rmse", "/error/rmse", "RMSE", "RMSE", "", 4, CheckRule::Error, 0.001, Better::Lower, kReportColumn, false, false,
-     errorValue<&ErrorMetrics::rmse>, storeError<&ErrorMetrics::rmse>, MetricReference::Hard},
+     errorValue<&ErrorMetrics::rmse>, storeError<&ErrorMetrics::rmse>, MetricReference::Hard, "RMSE of visibility"},
     {"leak_pct", "/error/leak_pct", "leak %", "leak", "%", 3, CheckRule::Error, 0.01, Better::Lower,
-     kReportColumn | kBrief, false, false, errorValue<&ErrorMetrics::leakPct>, storeError<&ErrorMetrics::leakPct>, MetricReference::Hard},
+     kReportColumn | kBrief, false, false, errorValue<&ErrorMetrics::leakPct>, storeError<&ErrorMetrics::leakPct>,
+     MetricReference::Hard, "% of deep-shadow receivers lit"},
     {"overestimation_pct", "/error/overestimation_pct", "overestimation %", "overestimation", "%", 3, CheckRule::Error,
      0.01, Better::Lower, kReportColumn, false, false, errorValue<&ErrorMetrics::overestimationPct>,
-     storeError<&ErrorMetrics::overestimationPct>, MetricReference::Hard},
+     storeError<&ErrorMetrics::overestimationPct>, MetricReference::Hard, "% of deep-lit receivers shadowed"},
     {"boundary_px.mean", "/error/boundary_px/mean", "boundary px mean", "boundary", " px", 3, CheckRule::Error, 0.01,
      Better::Lower, kReportColumn | kBrief, false, false, errorValue<&ErrorMetrics::boundaryMean>,
-     storeError<&ErrorMetrics::boundaryMean>, MetricReference::Hard},
+     storeError<&ErrorMetrics::boundaryMean>, MetricReference::Hard, "mean boundary distance, px"},
     {"boundary_px.p95", "/error/boundary_px/p95", "boundary px p95", "boundary p95", " px", 3, CheckRule::None, 0,
      Better::Lower, kReportColumn, false, false, errorValue<&ErrorMetrics::boundaryP95>,
-     storeError<&ErrorMetrics::boundaryP95>, MetricReference::Hard},
+     storeError<&ErrorMetrics::boundaryP95>, MetricReference::Hard, "95th percentile boundary distance, px"},
     {"soft_rmse", "/error/soft_rmse", "soft RMSE", "soft RMSE", "", 4, CheckRule::Error, 0.001, Better::Lower,
      kReportColumn | kBrief, false, true,
      softValue<&ErrorMetrics::softRmse>,
-     storeSoft<&ErrorMetrics::softRmse>, MetricReference::Soft},
+     storeSoft<&ErrorMetrics::softRmse>, MetricReference::Soft, "RMSE against the area-light reference"},
     // Penumbra metrics against the area-light reference (kPenumbraEpsilon, metrics.h).
     {"soft_penumbra_mae", "/error/soft_penumbra_mae", "soft MAE penumbra", "penumbra MAE", "", 4, CheckRule::Error, 0.001,
      Better::Lower, kReportColumn | kBrief, false, false, softValue<&ErrorMetrics::softPenumbraMae>,
-     storeSoft<&ErrorMetrics::softPenumbraMae>, MetricReference::Soft},
+     storeSoft<&ErrorMetrics::softPenumbraMae>, MetricReference::Soft, "mean absolute error in the reference's penumbra"},
     {"soft_outside_mae", "/error/soft_outside_mae", "soft MAE outside penumbra", "", "", 4, CheckRule::Error, 0.001,
      Better::Lower, kReportColumn, false, false, softValue<&ErrorMetrics::softOutsideMae>,
-     storeSoft<&ErrorMetrics::softOutsideMae>, MetricReference::Soft},
+     storeSoft<&ErrorMetrics::softOutsideMae>, MetricReference::Soft, "mean absolute error outside the reference's penumbra"},
     {"soft_umbra_leak", "/error/soft_umbra_leak", "soft umbra leak", "", "", 4, CheckRule::Error, 0.001, Better::Lower,
      kReportColumn, false, false, softValue<&ErrorMetrics::softUmbraLeak>, storeSoft<&ErrorMetrics::softUmbraLeak>,
-     MetricReference::Soft},
+     MetricReference::Soft, "mean visibility in the reference's umbra (light leaked)"},
 };
 
 }  // namespace
@@ -149,6 +151,32 @@ std::string_view Metric::unit() const {
 }
 
 std::span<const Metric> metricTable() { return kTable; }
+
+std::string recordPath(const Metric& m) {
+  if (!m.path.empty()) return std::string(m.path);
+  if (m.check == CheckRule::Work) return "/work/total/" + std::string(m.name);  // record.cpp countsJson
+  return m.shownIn(kCarried) ? "/derived/" + std::string(m.name) : std::string();
+}
+
+std::vector<std::string_view> inputsOf(const Metric& m) {
+  std::vector<std::string_view> out;
+  for (std::size_t at = 0; at < m.from.size();) {
+    const std::size_t end = std::min(m.from.find(' ', at), m.from.size());
+    out.push_back(m.from.substr(at, end - at));
+    at = end + 1;
+  }
+  return out;
+}
+
+std::vector<std::string_view> useNames(unsigned uses) {
+  static constexpr std::pair<MetricUse, std::string_view> kNames[] = {
+      {kReportColumn, "report_column"}, {kBrief, "brief"}, {kCounter, "counter"}, {kSweepMeasure, "sweep_measure"},
+      {kCarried, "carried"}};
+  std::vector<std::string_view> out;
+  for (const auto& [use, name] : kNames)
+    if (uses & use) out.push_back(name);
+  return out;
+}
 
 std::string_view referenceName(MetricReference reference) {
   switch (reference) {

@@ -2,13 +2,15 @@
 // The one list of what a record measures: every stored figure (its JSON path in the
 // record) and every figure derived from one (ratios to `sm`, the whole frame, fps, memory
 // in KiB or MB), with how tables print it, how `check` judges it and which way is better.
-// The record writer and reader, report.md, grid.png, `check`, the sweep tables and the
-// benchmarks' counters all read it; no other place names a metric.
+// The record writer and reader, report.md, grid.png, `check`, the sweep tables, the
+// benchmarks' counters and, through `testbed metrics --json`, the Python scripts all read
+// it; no other place names a metric.
 #include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace testbed {
 
@@ -31,6 +33,9 @@ enum MetricUse : unsigned {
   kBrief = 2,          // the one-line summary of grid.png's rows and the progress lines
   kCounter = 4,        // a counter of testbed_benchmarks
   kSweepMeasure = 8,   // a spec's "measure" (docs/paper-runs.md "Spec")
+  // A derived figure the record carries in its "derived" block, computed here once so
+  // that no reader (the Python scripts above all) derives it again.
+  kCarried = 16,
 };
 
 // What an error metric was measured against (docs/ground-truth-and-metrics.md): the
@@ -59,11 +64,25 @@ struct Metric {
   // Stores a value read from the JSON path (stored figures only).
   void (*store)(Record& record, double value);
   MetricReference reference = MetricReference::None;
+  // What the figure says, for tables that explain their metrics (error metrics only).
+  std::string_view description = {};
+  // A derived figure's inputs: the names of the metrics it is computed from, separated by
+  // spaces (empty for a stored figure), so that readers can tell a re-derivation.
+  std::string_view from = {};
 
   bool shownIn(MetricUse use) const { return (uses & use) != 0; }
   // The unit alone, as a sweep table's header names it: "ms", "fps", "MB".
   std::string_view unit() const;
 };
+
+// Where a record holds the metric: its stored path, "/work/total/<name>" for a work
+// counter, "/derived/<name>" for a carried derived figure, empty for a ratio to the
+// baseline `sm` (no record holds it).
+std::string recordPath(const Metric& m);
+// The names in a derived figure's `from`, in order; none for a stored figure.
+std::vector<std::string_view> inputsOf(const Metric& m);
+// The names of MetricUse flags, as `testbed metrics --json` lists them.
+std::vector<std::string_view> useNames(unsigned uses);
 
 std::span<const Metric> metricTable();
 // Throws std::logic_error for a name the table does not hold (a programming error).

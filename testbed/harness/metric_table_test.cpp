@@ -101,6 +101,37 @@ TEST(MetricTable, ErrorMetricsNameTheirReference) {
   EXPECT_EQ(referenceName(metric("leak_pct").reference), "hard");
 }
 
+// A derived figure names the metrics it comes from; a record carries each derived figure
+// that needs no baseline in its "derived" block, as the table computes it, and reading the
+// record recomputes it rather than trusting the block.
+TEST(MetricTable, RecordsCarryTheDerivedFigures) {
+  Record r = timed("pcf", 12.5, 1.5);
+  r.work.emplace();
+  r.work->total = {1000, 20000, 3000, 7, 6};
+  nlohmann::json j = r;
+  for (const Metric& m : metricTable()) {
+    SCOPED_TRACE(std::string(m.name));
+    EXPECT_EQ(m.path.empty() && m.check != CheckRule::Work, !m.from.empty());  // derived: has inputs
+    for (std::string_view input : inputsOf(m)) EXPECT_NO_THROW(metric(input));
+    const std::string path = recordPath(m);
+    EXPECT_EQ(m.shownIn(kCarried), path.starts_with("/derived/"));
+    if (path.empty()) {
+      EXPECT_TRUE(m.name.starts_with("x_sm"));  // the ratios: no record holds its baseline
+      continue;
+    }
+    const std::optional<double> value = m.value(r, nullptr);
+    if (!value) continue;  // not measured (the soft metrics without an area reference)
+    EXPECT_EQ(j.at(nlohmann::json::json_pointer(path)).get<double>(), *value);
+  }
+  EXPECT_EQ(j["derived"]["frame_ms"], 14.0);
+  EXPECT_EQ(j["derived"]["memory_mb"], 3.0);
+  EXPECT_EQ(j["derived"]["invocations_k"], 24.0);
+  j["derived"]["frame_ms"] = 99.0;  // a stale block: the stored figures decide
+  const Record back = j.get<Record>();
+  EXPECT_EQ(*metric("frame_ms").value(back, nullptr), 14.0);
+  EXPECT_EQ(nlohmann::json(back)["derived"]["frame_ms"], 14.0);
+}
+
 TEST(MetricTable, BriefSummaryNamesTheBriefMetrics) {
   const Record sm = timed("sm", 10, 10), smsr = timed("smsr", 15, 10);
   EXPECT_EQ(briefSummary(smsr, &sm, ", "), "15 ms, 1.5x sm, mismatch 0.125%, leak 0%, boundary 0 px");

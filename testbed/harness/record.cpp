@@ -367,6 +367,11 @@ void to_json(json& out, const Record& r) {
         !v ? json(nullptr) : m.integer ? json(std::uint64_t(*v)) : json(*v);
   }
   if (r.error) writePixelCounts(out["error"], *r.error);
+  // The derived figures, computed here once so that readers take them as written; reading
+  // recomputes them from the stored ones.
+  for (const Metric& m : metricTable())
+    if (m.shownIn(kCarried))
+      if (const std::optional<double> v = m.value(r, nullptr)) out[json::json_pointer(recordPath(m))] = *v;
   // With two references in play, the error block names each measured metric's
   // (metric_table.h MetricReference); with the ground truth alone every metric is its.
   if (soft)

@@ -66,6 +66,9 @@ TEST(Record, CommittedRecordsRoundTripByteForByte) {
         // (sweep/sweep_records.cpp); they are carried over as written.
         for (const char* label : {"row", "column", "entries"})
           if (parsed[i].contains(label)) written.back()[label] = parsed[i][label];
+        // Records written before records carried their derived figures lack the block
+        // (docs/record.md "The record": `derived`); the writer adds it from the stored figures.
+        if (!parsed[i].contains("derived")) written.back().erase("derived");
       }
       // Compared line by line: a failure names the first differing line rather than asking
       // GoogleTest to diff two files of megabytes.
@@ -79,7 +82,7 @@ TEST(Record, CommittedRecordsRoundTripByteForByte) {
 json baselineRecord(const std::string& technique) {
   const json all = json::parse(readText(fs::path(TESTBED_SOURCE_DIR) / "tests/baselines/fence/metrics.json"));
   for (const auto& r : all)
-    if (r["technique"] == technique) return r;
+    if (r["technique"] == technique) return json(r.get<Record>());  // as the writer writes it today
   throw std::runtime_error("no " + technique + " in tests/baselines/fence");
 }
 
