@@ -38,16 +38,18 @@ struct WorldBounds {
 std::array<glm::vec3, 8> cameraFrustumSlice(const CameraDesc& camera, float aspect, float nearDepth, float farDepth);
 
 // The crop matrix C of parallel-split shadow maps (Zhang, Sun and Nyman, "Parallel-Split
-// Shadow Maps on Programmable GPUs", GPU Gems 3, ch. 10, 2008): a scale and an offset of the light's clip x and y so that
-// C·(light's view-projection) spreads the points' footprint over the whole map, plus
-// `marginTexels` texels of a `mapSize` map on each side (a receiver on the footprint's edge
-// must not read the border). The crop is square (the larger side's scale for both axes,
-// centred on the footprint), so texels stay square; the footprint is clamped to the
-// light's own frustum first. Depth is left alone: casters anywhere in the light's depth range still cast
-// into the cropped map. Identity when there is no point or one lies behind a spot light
-// (w ≤ 0), where a projective footprint is meaningless.
+// Shadow Maps on Programmable GPUs", GPU Gems 3, ch. 10, 2008): a scale and an offset of the
+// light's clip x and y so that C·(light's view-projection) spreads the points' footprint
+// over the whole map (where `within` is not empty, the part of it inside the footprint of
+// within's box: a frustum slice ∩ the scene's bounds), plus `marginTexels` texels of a
+// `mapSize` map on each side (a receiver on the footprint's edge must not read the border).
+// The crop is square (the larger side's scale for both axes, centred on the footprint), so
+// texels stay square; the footprints are clamped to the light's own frustum first. Depth is
+// left alone: casters anywhere in the light's depth range still cast into the cropped map.
+// Identity when there is no point, when one lies behind a spot light (w ≤ 0, where a
+// projective footprint is meaningless) or when the footprints do not meet.
 glm::mat4 cropMatrix(const glm::mat4& lightViewProjection, std::span<const glm::vec3> points, int mapSize,
-                     int marginTexels = 1);
+                     const WorldBounds& within = {}, int marginTexels = 1);
 
 // The light with its projection cropped to the points (cropMatrix(...)·projection), its
 // extent (directional) or fov (spot) those of the square crop, so that the texel and
