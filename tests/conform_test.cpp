@@ -79,7 +79,8 @@ TEST_P(ConformExamplePlugin, PassesEveryCheck) {
 
 INSTANTIATE_TEST_SUITE_P(Plugins, ConformExamplePlugin,
                          ::testing::Values(ExamplePlugin{TESTBED_PLUGIN_EXAMPLE, "example-sm"},
-                                           ExamplePlugin{TESTBED_PLUGIN_PCSS, "pcss"}),
+                                           ExamplePlugin{TESTBED_PLUGIN_PCSS, "pcss"},
+                                           ExamplePlugin{TESTBED_PLUGIN_PSSM, "pssm"}),
                          [](const auto& info) {
                            std::string name = info.param.id;
                            for (char& c : name)

@@ -204,6 +204,83 @@ TEST(PcssPlugin, ScoresALowerSoftErrorThanSmAgainstTheAreaLightReference) {
 }
 
 // ---------------------------------------------------------------------------------------
+// The cascaded plugin (tests/plugin_example/pssm.cpp): a technique with its own passes and
+// several maps, built only on the plugin API (docs/writing-a-technique.md "A technique with
+// its own passes").
+
+// A grazing outdoor scene: a 400×400 ground seen from 5 units up, a low sun, casters 8 to
+// 300 units ahead; one map fitted to the whole ground has texels of half a unit.
+fs::path outdoorScene(const TempDir& tmp) {
+  const json scene = {
+      {"name", "outdoor-grazing"},
+      {"camera", {{"eye", {0, 5, -190}}, {"target", {0, 3, -150}}, {"fov_y", 50}, {"near", 0.5}, {"far", 500}}},
+      {"light", {{"type", "directional"}, {"direction", {0.35, -0.45, 1}}, {"target", {0, 0, 0}}}},
+      {"objects",
+       {{{"primitive", "plane"}, {"size", {400, 400}}},
+        {{"primitive", "box"}, {"size", {2, 2, 2}}, {"translate", {1, 1, -182}}},
+        {{"primitive", "box"}, {"size", {4, 4, 4}}, {"translate", {-4, 2, -160}}},
+        {{"primitive", "box"}, {"size", {10, 10, 10}}, {"translate", {8, 5, -90}}},
+        {{"primitive", "box"}, {"size", {30, 30, 30}}, {"translate", {-20, 15, 110}}}}}};
+  return writeFile(tmp / "outdoor.json", scene.dump());
+}
+
+const std::vector<std::string> kPssmSize = {"--size", "320x180", "--shadow-map", "512"};
+
+// Each cascade is timed as its own pass, and the record's light block lists every map: its
+// split of the camera's depths (contiguous, in order) and its texel, finer than the one
+// fitted map's. A technique reporting no maps (sm) keeps the light block it always had.
+TEST(PssmPlugin, RecordListsEveryCascadeWithItsSplitAndTexel) {
+  TempDir tmp;
+  const fs::path scene = outdoorScene(tmp);
+  const RunResult run = runTestbed(with({"render", "--plugin", TESTBED_PLUGIN_PSSM, "--scene", scene.string(),
+                                         "--technique", "pssm", "--set", "cascades=2", "--out", (tmp / "pssm").string()},
+                                        kPssmSize));
+  ASSERT_EQ(run.exitCode, 0) << run.describe();
+  const json record = json::parse(readFile(tmp / "pssm" / "pssm.json"));
+  const json& passes = record["gpu_ms"]["passes"];
+  EXPECT_TRUE(passes.contains("cascade-0") && passes.contains("cascade-1") && !passes.contains("cascade-2"))
+      << passes.dump();
+  const json& light = record["light"];
+  ASSERT_EQ(light["maps"].size(), 2u) << light.dump(2);
+  const double texel = light["texel_world"][0].get<double>();
+  double previous = -1;
+  for (const json& map : light["maps"]) {
+    const double begin = map["split"][0].get<double>(), end = map["split"][1].get<double>();
+    if (previous >= 0) EXPECT_DOUBLE_EQ(begin, previous) << "contiguous splits";
+    EXPECT_LT(begin, end);
+    previous = end;
+    EXPECT_LT(map["texel_world"][0].get<double>(), texel) << map.dump();
+    EXPECT_EQ(map["type"], "directional");
+    EXPECT_TRUE(map.contains("extent") && map.contains("depth_step_world") && map.contains("offset_world")) << map.dump();
+  }
+  EXPECT_DOUBLE_EQ(light["maps"][0]["split"][0].get<double>(), 0.5) << "the first split starts at the camera's near plane";
+
+  const RunResult sm = runTestbed(
+      with({"render", "--scene", scene.string(), "--technique", "sm", "--out", (tmp / "sm").string()}, kPssmSize));
+  ASSERT_EQ(sm.exitCode, 0) << sm.describe();
+  const json smLight = json::parse(readFile(tmp / "sm" / "sm.json"))["light"];
+  EXPECT_FALSE(smLight.contains("maps") || smLight.contains("split")) << smLight.dump(2);
+}
+
+// Four splits of the grazing view against sm's one fitted map: fewer pixels disagree with
+// the exact shadows (measured 0.196 % → 0.073 % at 320×180, 512² maps), none leaks more.
+TEST(PssmPlugin, ReducesSmsMismatchOnAGrazingOutdoorScene) {
+  TempDir tmp;
+  const RunResult run = runTestbed(with({"compare", "--plugin", TESTBED_PLUGIN_PSSM, "--scene",
+                                         outdoorScene(tmp).string(), "--techniques", "sm,pssm", "--out",
+                                         (tmp / "out").string()},
+                                        kPssmSize));
+  ASSERT_EQ(run.exitCode, 0) << run.describe();
+  std::map<std::string, json> error;
+  for (const auto& record : json::parse(readFile(tmp / "out" / "metrics.json"))) error[record["technique"]] = record["error"];
+  ASSERT_TRUE(error.count("sm") && error.count("pssm")) << run.out;
+  const double sm = error["sm"]["mismatch_pct"].get<double>(), pssm = error["pssm"]["mismatch_pct"].get<double>();
+  std::cout << "mismatch on the grazing outdoor scene (320x180, 512² maps): sm " << sm << " %, pssm " << pssm << " %\n";
+  EXPECT_LT(pssm, 0.6 * sm);
+  EXPECT_LE(error["pssm"]["leak_pct"].get<double>(), error["sm"]["leak_pct"].get<double>());
+}
+
+// ---------------------------------------------------------------------------------------
 // Bad plugins: exit 2, one line naming the path (and the id), no output written.
 
 // `render` is the command that would write files; the loading path is the same for all.

@@ -26,8 +26,22 @@ vec3 lightCoordinatesOfClip(vec4 clip) { return clip.xyz / clip.w * 0.5 + 0.5; }
 
 // Shadow-map coordinates of a world position WITHOUT clamping or the outside-the-frustum
 // convention (lightSpace() in receiver.glsl applies that): a blocker search or a gradient
-// may step beside the map. Meaningless behind a spot light (view depth ≤ 0).
-vec3 lightCoordinates(vec3 world) { return lightCoordinatesOfClip(uLightViewProjection * vec4(world, 1.0)); }
+// may step beside the map. Meaningless behind a spot light (view depth ≤ 0). The first
+// form takes the map's world → clip transform (a cascade's), the second the light's.
+vec3 lightCoordinates(mat4 lightViewProjection, vec3 world) {
+  return lightCoordinatesOfClip(lightViewProjection * vec4(world, 1.0));
+}
+vec3 lightCoordinates(vec3 world) { return lightCoordinates(uLightViewProjection, world); }
+
+// World size of one texel along a map's x and y at view depth `viewDepth` from the light,
+// for a map of `mapSize` texels made with the projection `lightProjection` (orthographic or
+// perspective, cropped or not: the view is rigid, so the projection alone scales):
+// 2·w / (P₀₀·N) and 2·w / (P₁₁·N), w the clip w at that depth (1 orthographic, the depth
+// perspective). The C++ twin is texelWorldSize() in technique/light_crop.h.
+vec2 texelWorldSize(mat4 lightProjection, ivec2 mapSize, float viewDepth) {
+  float w = -lightProjection[2][3] * viewDepth + lightProjection[3][3];
+  return 2.0 * w / (vec2(lightProjection[0][0], lightProjection[1][1]) * vec2(mapSize));
+}
 
 // The view depth (world units along uLightDirection from uLightPosition) of a world point.
 float lightViewDepthOf(vec3 world) { return dot(world - uLightPosition, uLightDirection); }

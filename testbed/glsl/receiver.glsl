@@ -43,10 +43,12 @@ bool insideLightFrustum(vec3 light) {
 }
 
 // Shadow-map coordinates: xy in [0,1] across the map, z the light depth in [0,1] as the
-// depth buffer stores it; kOutsideLight outside the light's frustum.
-vec3 lightSpace(vec3 position) {
-  vec4 clip = uLightViewProjection * vec4(position, 1.0);
+// depth buffer stores it; kOutsideLight outside the frustum of `lightViewProjection` (a
+// map's world → clip transform: a cascade's), or of the light's in the second form.
+vec3 lightSpace(mat4 lightViewProjection, vec3 position) {
+  vec4 clip = lightViewProjection * vec4(position, 1.0);
   if (!(clip.w > 0.0)) return kOutsideLight;
   vec3 light = lightCoordinatesOfClip(clip);
   return insideLightFrustum(light) ? light : kOutsideLight;
 }
+vec3 lightSpace(vec3 position) { return lightSpace(uLightViewProjection, position); }

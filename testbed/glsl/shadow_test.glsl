@@ -1,14 +1,31 @@
-// The binary shadow test s ∈ {0 shadow, 1 lit} against the nearest-filtered shadow map.
+// The binary shadow test s ∈ {0 shadow, 1 lit} against a nearest-filtered depth map.
 // Outside the map the border depth 0 answers, so everything outside reads as shadow.
+// Each test takes the map it reads (a 2D map, or a layer of an array of maps: cascades);
+// the forms without one read the shared shadow map, uShadowMap (bindShadowMap,
+// render/shadow_map_pass.h).
 uniform sampler2D uShadowMap;
 uniform ivec2 uShadowMapSize;
 
-float shadowTest(vec2 uv, float depth, float bias) {
-  float stored = texture(uShadowMap, uv).r;
-  return depth - bias <= stored ? 1.0 : 0.0;
-}
+// The comparison itself, the one every test below makes.
+float shadowCompare(float stored, float depth, float bias) { return depth - bias <= stored ? 1.0 : 0.0; }
 
-// The same at an explicit texel (neighbour tests of the revectorization family).
+float shadowTest(sampler2D map, vec2 uv, float depth, float bias) {
+  return shadowCompare(texture(map, uv).r, depth, bias);
+}
+float shadowTest(sampler2DArray maps, int layer, vec2 uv, float depth, float bias) {
+  return shadowCompare(texture(maps, vec3(uv, float(layer))).r, depth, bias);
+}
+float shadowTest(vec2 uv, float depth, float bias) { return shadowTest(uShadowMap, uv, depth, bias); }
+
+// The same at an explicit texel of a map of `size` texels (neighbour tests of the
+// revectorization family): the nearest lookup at the texel's centre.
+vec2 shadowTexelUv(ivec2 texel, ivec2 size) { return (vec2(texel) + 0.5) / vec2(size); }
+float shadowTestTexel(sampler2D map, ivec2 texel, float depth, float bias) {
+  return shadowTest(map, shadowTexelUv(texel, textureSize(map, 0)), depth, bias);
+}
+float shadowTestTexel(sampler2DArray maps, int layer, ivec2 texel, float depth, float bias) {
+  return shadowTest(maps, layer, shadowTexelUv(texel, textureSize(maps, 0).xy), depth, bias);
+}
 float shadowTestTexel(ivec2 texel, float depth, float bias) {
-  return shadowTest((vec2(texel) + 0.5) / vec2(uShadowMapSize), depth, bias);
+  return shadowTest(uShadowMap, shadowTexelUv(texel, uShadowMapSize), depth, bias);
 }

@@ -58,6 +58,28 @@ TESTBED_UNIT(Texture, kVolumeCountTextureUnit, 3, GroundTruth)  // volume_visibi
 TESTBED_UNIT(Texture, kShadingNormalTextureUnit, 3, Shading)      // shading.frag's uShadingNormal
 TESTBED_UNIT(Texture, kShadingVisibilityTextureUnit, 4, Shading)  // shading.frag's uVisibility
 
+// Out-of-tree techniques (plugins, technique/plugin.h): a plugin cannot add lines to this
+// table, so these are its own, beside the Shared ones and apart from every in-tree
+// technique's (texture units 8 to 15, past all of theirs). Bind and name them like any
+// other: glBindTextureUnit(testbed::kPluginTextureUnit0, …) and
+// layout(binding = kPluginTextureUnit0) or program.set("uMine", testbed::kPluginTextureUnit0).
+TESTBED_UNIT(Texture, kPluginTextureUnit0, 8, Plugin)
+TESTBED_UNIT(Texture, kPluginTextureUnit1, 9, Plugin)
+TESTBED_UNIT(Texture, kPluginTextureUnit2, 10, Plugin)
+TESTBED_UNIT(Texture, kPluginTextureUnit3, 11, Plugin)
+TESTBED_UNIT(Texture, kPluginTextureUnit4, 12, Plugin)
+TESTBED_UNIT(Texture, kPluginTextureUnit5, 13, Plugin)
+TESTBED_UNIT(Texture, kPluginTextureUnit6, 14, Plugin)
+TESTBED_UNIT(Texture, kPluginTextureUnit7, 15, Plugin)
+TESTBED_UNIT(Image, kPluginImageUnit0, 0, Plugin)
+TESTBED_UNIT(Image, kPluginImageUnit1, 1, Plugin)
+TESTBED_UNIT(Image, kPluginImageUnit2, 2, Plugin)
+TESTBED_UNIT(Image, kPluginImageUnit3, 3, Plugin)
+TESTBED_UNIT(Buffer, kPluginBufferBinding0, 0, Plugin)
+TESTBED_UNIT(Buffer, kPluginBufferBinding1, 1, Plugin)
+TESTBED_UNIT(Buffer, kPluginBufferBinding2, 2, Plugin)
+TESTBED_UNIT(Buffer, kPluginBufferBinding3, 3, Plugin)
+
 // The GLSL unit tests' probes.
 TESTBED_UNIT(Texture, kProbeATextureUnit, 3, Probe)
 TESTBED_UNIT(Texture, kProbeBTextureUnit, 4, Probe)

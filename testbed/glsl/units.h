@@ -8,7 +8,8 @@ namespace testbed {
 
 enum class UnitKind { Texture, Image, Buffer };
 // Which programs bind a unit together (units.glsl).
-enum class UnitScope { Shared, Rpcf, Smsr2Pass, SilhouetteMap, Prefiltered, Edtsm, BandedEdt, GroundTruth, Shading, Probe };
+enum class UnitScope { Shared, Rpcf, Smsr2Pass, SilhouetteMap, Prefiltered, Edtsm, BandedEdt, GroundTruth, Shading, Probe,
+                       Plugin };
 
 struct UnitEntry {
   UnitKind kind;

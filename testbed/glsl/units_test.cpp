@@ -119,6 +119,19 @@ TEST(Units, EveryUnitIsOneEveryGl45DriverOffers) {
   }
 }
 
+// The plugins' texture units (units.glsl) are a range of their own: no in-tree unit of any
+// scope has their numbers, so a plugin beside any in-tree helper binds without a clash.
+TEST(Units, PluginTextureUnitsAreARangeNoInTreeUnitUses) {
+  std::vector<int> plugin;
+  for (const auto& unit : kUnits)
+    if (unit.scope == UnitScope::Plugin && unit.kind == UnitKind::Texture) plugin.push_back(unit.number);
+  ASSERT_EQ(plugin.size(), 8u);
+  for (std::size_t i = 0; i < plugin.size(); ++i) EXPECT_EQ(plugin[i], kPluginTextureUnit0 + int(i));
+  for (const auto& unit : kUnits)
+    if (unit.scope != UnitScope::Plugin && unit.kind == UnitKind::Texture)
+      EXPECT_LT(unit.number, kPluginTextureUnit0) << unit.name;
+}
+
 // The checks find what they look for: a planted shader, C++ call and table.
 TEST(Units, TheChecksCatchPlantedLiterals) {
   const test::TempDir dir("testbed-units");

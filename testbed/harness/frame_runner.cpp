@@ -81,7 +81,8 @@ FrameRunner::~FrameRunner() = default;
 FrameInputs FrameRunner::inputs() const {
   return FrameInputs{scene_, geometry_, gbuffer_, settings_.size,
                      cameraTransforms(scene_.camera, aspectOf(settings_.size)),
-                     light_, settings_.shadowMapSize, settings_.depthFormat, path_};
+                     light_, settings_.shadowMapSize, settings_.depthFormat, path_,
+                     scene_.camera, geometry_.bounds()};
 }
 
 TechniqueSession::TechniqueSession(FrameRunner& runner, const RegisteredTechnique& technique,
@@ -169,6 +170,7 @@ TechniqueRun FrameRunner::run(TechniqueSession& session, const ParameterSet& par
   result.memory = session.memory();
   result.visibility = session.visibility();
   result.debugImages = session.technique().debugImages();
+  result.maps = session.technique().shadowMaps();
   return result;
 }
 

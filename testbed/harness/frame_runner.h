@@ -57,6 +57,7 @@ struct TechniqueRun {
   std::uint64_t memoryBytes = 0;
   std::vector<GpuMemoryLedger::Resource> memory;  // memoryBytes split by resource
   std::vector<std::pair<std::string, ImageF>> debugImages;  // ShadowTechnique::debugImages()
+  std::vector<ShadowMapUse> maps;  // ShadowTechnique::shadowMaps() of the last frame
 };
 
 class FrameRunner;

@@ -197,6 +197,13 @@ LightRecord readLight(const Reader& r) {
   l.depthStepWorld = r["depth_step_world"].numbers<2>();
   l.texelWorld = r["texel_world"].numbers<2>();
   if (r.has("offset_world")) l.offsetWorld = r["offset_world"].numbers<2>();
+  if (r.has("split")) l.split = r["split"].numbers<2>();
+  if (r.has("maps")) {
+    const Reader maps = r["maps"];
+    if (!maps.value.is_array()) maps.fail("expected an array");
+    for (std::size_t i = 0; i < maps.value.size(); ++i)
+      l.maps.push_back(readLight(Reader{maps.value[i], maps.path + "[" + std::to_string(i) + "]"}));
+  }
   return l;
 }
 
@@ -291,7 +298,7 @@ Record makeRecord(const TechniqueRun& run, const FrameRunner& runner, const std:
   r.path = runner.path();
   r.shaderPath = shaderPath();
   r.work = run.times.work;
-  r.light = lightSetupRecord(runner.light(), s.shadowMapSize, s.depthFormat, run.params);
+  r.light = lightSetupRecord(runner.light(), s.shadowMapSize, s.depthFormat, run.params, run.maps);
   r.backend = backend;
   return r;
 }
@@ -325,6 +332,8 @@ void to_json(json& out, const LightRecord& l) {
   if (l.fov) out["fov"] = *l.fov;
   if (l.extent) out["extent"] = *l.extent;
   if (l.offsetWorld) out["offset_world"] = json::array({(*l.offsetWorld)[0], (*l.offsetWorld)[1]});
+  if (l.split) out["split"] = json::array({(*l.split)[0], (*l.split)[1]});
+  if (!l.maps.empty()) out["maps"] = l.maps;
 }
 
 void from_json(const json& value, LightRecord& light) {

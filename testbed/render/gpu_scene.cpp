@@ -17,6 +17,15 @@ struct Vertex {
   float faceNormal[3];  // the triangle's own normal, for the facing rule
 };
 
+WorldBounds boundsOf(const TriMesh& mesh) {
+  WorldBounds b;
+  for (const auto vertex : mesh.vertices()) {
+    const auto& p = mesh.point(vertex);
+    b.add(glm::vec3(p[0], p[1], p[2]));
+  }
+  return b;
+}
+
 void appendVertices(const TriMesh& mesh, std::vector<Vertex>& vertices) {
   for (const auto face : mesh.faces()) {
     const auto faceNormal = mesh.normal(face);
@@ -37,6 +46,7 @@ GpuScene::GpuScene(const Scene& scene) {
   std::vector<Vertex> vertices;
   for (const auto& object : scene.objects) {
     firstVertex_.push_back(vertices.size());
+    objectBounds_.push_back(boundsOf(object.mesh));
     appendVertices(object.mesh, vertices);
   }
   vertexCount_ = vertices.size();
@@ -54,10 +64,17 @@ void GpuScene::update(const Scene& scene, const std::vector<std::size_t>& object
   std::vector<Vertex> vertices;
   for (const std::size_t i : objects) {
     vertices.clear();
+    objectBounds_[i] = boundsOf(scene.objects[i].mesh);
     appendVertices(scene.objects[i].mesh, vertices);
     glNamedBufferSubData(vertices_.id(), GLintptr(firstVertex_[i] * sizeof(Vertex)),
                          GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data());
   }
+}
+
+WorldBounds GpuScene::bounds() const {
+  WorldBounds all;
+  for (const WorldBounds& b : objectBounds_) all.add(b);
+  return all;
 }
 
 void GpuScene::draw() const {

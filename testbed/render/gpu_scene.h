@@ -6,6 +6,7 @@
 
 #include "testbed/gl/objects.h"
 #include "testbed/scene/scene.h"
+#include "testbed/technique/light_crop.h"
 
 namespace testbed {
 
@@ -19,9 +20,12 @@ class GpuScene {
   // Uploads again the vertices of the given objects (moved by an animation: same
   // triangles, new positions), leaving the others' as they are.
   void update(const Scene& scene, const std::vector<std::size_t>& objects);
+  // The box around every vertex uploaded: bounded at upload and, per moved object, at update.
+  WorldBounds bounds() const;
 
  private:
   std::vector<std::size_t> firstVertex_;  // per object, into the buffer
+  std::vector<WorldBounds> objectBounds_;
   Buffer vertices_;
   VertexArray vertexArray_;
   std::size_t vertexCount_ = 0;

@@ -8,12 +8,15 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
 
 #include "testbed/gl/objects.h"
 #include "testbed/glsl/units.h"
 #include "testbed/render/receiver_inputs.h"
 #include "testbed/render/screen_pass.h"
+#include "testbed/render/shadow_map_pass.h"
 #include "testbed/scene/view.h"
+#include "testbed/technique/light_crop.h"
 #include "tests/gl_fixture.h"
 
 namespace testbed {
@@ -182,6 +185,30 @@ TEST(LightGlsl, ReceiverPlaneGradientFromThePlaneIsExact) {
   const auto z = probe("vec4(receiverPlaneDepth(vec3(0.5, 0.5, 0.25), vec2(0.5, -1.0), vec2(0.1, 0.05)))", sun(), 0.0f,
                        {glm::vec4(0)});
   EXPECT_FLOAT_EQ(z[0].x, 0.25f + 0.05f - 0.05f);
+}
+
+// texelWorldSize() against the C++: the record's texel size (lightSetupRecord's, from the
+// fov or extent) at the near and far planes of a spot and a directional light, and
+// texelWorldSize() of light_crop.h for a cropped projection, which the record cannot state.
+TEST(LightGlsl, TexelWorldSizeIsTheCppValue) {
+  const int size = 512;
+  for (const LightTransforms& light : {spot(), sun()}) {
+    const LightRecord record = lightSetupRecord(light, size, DepthFormat::D16, nlohmann::json::object());
+    const auto texel = probe("vec4(texelWorldSize(uLightProjection, ivec2(" + std::to_string(size) + "), a.x), 0, 0)",
+                             light, 0.0f, {glm::vec4(light.nearPlane), glm::vec4(light.farPlane)});
+    for (int i = 0; i < 2; ++i) {
+      EXPECT_NEAR(texel[i].x, record.texelWorld[i], 1e-5 * record.texelWorld[i]) << record.type << " plane " << i;
+      EXPECT_NEAR(texel[i].y, record.texelWorld[i], 1e-5 * record.texelWorld[i]) << record.type << " plane " << i;
+    }
+  }
+  // A sun cropped to a 2×2 square: 4 / 512 world units a texel, plus the crop's margin.
+  const std::vector<glm::vec3> square = {{-1, 0, -1}, {1, 0, 1}};
+  LightTransforms cropped = croppedLight(sun(), square, size);
+  const glm::dvec2 cpu = texelWorldSize(cropped.projection, glm::ivec2(size), 3.0);
+  EXPECT_NEAR(cpu.x, 2.0 / 510, 1e-6);
+  const auto gpu = probe("vec4(texelWorldSize(uLightProjection, ivec2(512), 3.0), 0, 0)", cropped, 0.0f, {glm::vec4(0)});
+  EXPECT_NEAR(gpu[0].x, cpu.x, 1e-5 * cpu.x);
+  EXPECT_NEAR(gpu[0].y, cpu.y, 1e-5 * cpu.y);
 }
 
 }  // namespace

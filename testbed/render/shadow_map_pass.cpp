@@ -1,6 +1,10 @@
 #include "testbed/render/shadow_map_pass.h"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -11,10 +15,10 @@
 
 namespace testbed {
 
-void ShadowMapPass::Parameters::reflect(ParameterBinder& b) {
-  b.real("offset_factor", offsetFactor, 4.0, 0.0, 100.0,
+void ShadowMapPass::Parameters::reflect(ParameterBinder& b, PolygonOffsetDefaults defaults) {
+  b.real("offset_factor", offsetFactor, defaults.factor, 0.0, 100.0,
          "glPolygonOffset factor while rendering the shadow map (slope term)");
-  b.real("offset_units", offsetUnits, 20.0, 0.0, 100000.0,
+  b.real("offset_units", offsetUnits, defaults.units, 0.0, 100000.0,
          "polygon offset's constant term, in 16-bit depth steps whatever the depth format");
 }
 
@@ -36,7 +40,11 @@ float polygonOffsetUnits(DepthFormat format, float units16) {
 }  // namespace
 
 PassDeclaration ShadowMapPass::declaredPass() {
-  return {.name = "shadow-map", .paperStep = "the light's depth map (Williams, SIGGRAPH 1978)"};
+  return declaredPass("shadow-map", "the light's depth map (Williams, SIGGRAPH 1978)");
+}
+
+PassDeclaration ShadowMapPass::declaredPass(std::string name, std::string paperStep) {
+  return {.name = std::move(name), .paperStep = std::move(paperStep)};
 }
 
 ResourceDeclaration ShadowMapPass::declaredMap() {
@@ -47,12 +55,42 @@ ResourceDeclaration ShadowMapPass::declaredMap() {
           .role = ResourceRole::Paper};
 }
 
-void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
+GLuint ShadowMapPass::ensureTarget(const FrameInputs& in, int layer) {
+  if (layer < 0 || layer >= std::max(layers_, 1))
+    throw std::logic_error("shadow map: layer " + std::to_string(layer) + " of a map of " +
+                           std::to_string(std::max(layers_, 1)) + " layers");
   const GLenum format = depthInternalFormat(in.depthFormat);
   auto label = allocating(declaredMap());
   // Border depth 0: every lookup outside the map reads shadow (testbed/glsl/receiver.glsl).
-  if (target_.ensure({.size = glm::ivec2(in.shadowMapSize), .depth = format}))
-    target_.depth().setWrap(GL_CLAMP_TO_BORDER, glm::vec4(0.0f));
+  if (layers_ == 0) {
+    array_ = Texture();
+    layerFramebuffers_.clear();
+    if (target_.ensure({.size = glm::ivec2(in.shadowMapSize), .depth = format}))
+      target_.depth().setWrap(GL_CLAMP_TO_BORDER, glm::vec4(0.0f));
+    return target_.framebuffer().id();
+  }
+  if (!array_ || array_.width() != in.shadowMapSize || array_.internalFormat() != format ||
+      int(layerFramebuffers_.size()) != layers_) {
+    target_ = RenderTarget();
+    array_ = Texture::create2DArray(format, in.shadowMapSize, in.shadowMapSize, layers_);
+    array_.setWrap(GL_CLAMP_TO_BORDER, glm::vec4(0.0f));
+    layerFramebuffers_.clear();
+    for (int i = 0; i < layers_; ++i) {
+      Framebuffer framebuffer = Framebuffer::create();
+      glNamedFramebufferTextureLayer(framebuffer.id(), GL_DEPTH_ATTACHMENT, array_.id(), 0, i);
+      framebuffer.finish({});
+      layerFramebuffers_.push_back(std::move(framebuffer));
+    }
+  }
+  return layerFramebuffers_[std::size_t(layer)].id();
+}
+
+void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
+  render(in, in.light, declaredPass().name, timer);
+}
+
+void ShadowMapPass::render(const FrameInputs& in, const ViewProjection& light, const std::string& pass,
+                           PassTimer& timer, int layer) {
   // offset_units counts 16-bit depth steps at every depth format, so the constant term
   // keeps the world size it has at the papers' 16 bits: ×256 at 24 bits (r = 2^-24); a
   // 32f buffer's r depends on each primitive's depth, so there the shader adds the term.
@@ -62,11 +100,12 @@ void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
     program = Program::graphics("testbed/render/shadow_map.vert", "testbed/render/shadow_map.frag",
                                 floatDepth ? "#define CONSTANT_OFFSET_IN_SHADER\n" : "");
   const float units = parameters_.offsetUnits;
+  const GLuint framebuffer = ensureTarget(in, layer);
 
-  auto scope = timer.scope(declaredPass().name);
-  glBindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer().id());
+  auto scope = timer.scope(pass);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, in.shadowMapSize, in.shadowMapSize);
-  glClearNamedFramebufferfi(target_.framebuffer().id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  glClearNamedFramebufferfi(framebuffer, GL_DEPTH_STENCIL, 0, 1.0f, 0);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
@@ -74,7 +113,7 @@ void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(parameters_.offsetFactor, polygonOffsetUnits(in.depthFormat, units));
   program.use();
-  program.set("uLightViewProjection", in.light.viewProjection());
+  program.set("uLightViewProjection", light.viewProjection());
   if (floatDepth) program.set("uConstantOffset", units * kDepthStep16);
   requireUniformsSet(program);
   in.geometry.draw();
@@ -82,7 +121,7 @@ void ShadowMapPass::render(const FrameInputs& in, PassTimer& timer) {
 }
 
 LightRecord lightSetupRecord(const LightTransforms& light, int shadowMapSize, DepthFormat format,
-                             const nlohmann::json& params) {
+                             const nlohmann::json& params, const std::vector<ShadowMapUse>& maps) {
   const int bits = format == DepthFormat::D16 ? 16 : 24;  // 32f: its r in [0.5, 1), 2^-24
   auto texel = [&](double depth) {
     const double half = light.orthographic ? light.extent : depth * std::tan(glm::radians(double(light.fovDegrees)) / 2);
@@ -106,12 +145,20 @@ LightRecord lightSetupRecord(const LightTransforms& light, int shadowMapSize, De
     record.offsetWorld =
         atPlanes([&](double d) { return units * depthStepWorld(light, 16, d) + factor * texel(d); });
   }
+  for (const ShadowMapUse& map : maps) {
+    record.maps.push_back(lightSetupRecord(map.light, shadowMapSize, format, params));
+    record.maps.back().split = map.split;
+  }
   return record;
 }
 
+void bindMap(const Program& program, const char* sampler, int unit, const Texture& map) {
+  glBindTextureUnit(GLuint(unit), map.id());
+  program.set(sampler, unit);
+}
+
 void bindShadowMap(const Program& program, const Texture& shadowMap) {
-  glBindTextureUnit(kShadowMapTextureUnit, shadowMap.id());
-  program.set("uShadowMap", kShadowMapTextureUnit);
+  bindMap(program, "uShadowMap", kShadowMapTextureUnit, shadowMap);
   program.set("uShadowMapSize", glm::ivec2(shadowMap.width(), shadowMap.height()));
 }
 

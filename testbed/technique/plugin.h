@@ -29,8 +29,9 @@
 // 2: describe() and ParameterBinder replace info() and staticInfo(); 3: WithParameters
 // owns configure(), the registration takes the description and declares the parameters;
 // 4: ShadowMapScreenTechnique::setUniforms takes the frame's inputs, glsl/light.glsl;
-// 5: TechniqueInfo declares the passes and resources (declaration.h).
-#define TESTBED_PLUGIN_API_VERSION 5
+// 5: TechniqueInfo declares the passes and resources (declaration.h); 6: FrameInputs gives
+// the camera's set-up and the scene's bounds, ShadowTechnique::shadowMaps() reports maps.
+#define TESTBED_PLUGIN_API_VERSION 6
 
 namespace testbed {
 

@@ -3,8 +3,10 @@
 // A technique turns the frame's inputs into a screen-space visibility buffer: 1 = lit,
 // 0 = shadowed, in between for filtered techniques; receivers whose normal faces away
 // from the light are shadowed (glsl/receiver.glsl does that for every technique).
+#include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,7 @@
 #include "testbed/scene/scene.h"
 #include "testbed/scene/view.h"
 #include "testbed/technique/declaration.h"
+#include "testbed/technique/light_crop.h"
 #include "testbed/technique/parameter_binder.h"
 #include "testbed/technique/parameters.h"
 #include "testbed/technique/path.h"
@@ -55,6 +58,24 @@ struct FrameInputs {
   // The run's path (path.h): a technique whose paper structure differs from its fast one
   // renders the one asked for, with the same visibility.
   TechniquePath path = TechniquePath::Paper;
+  // What `camera` is made of (cameraTransforms, scene/view.h): eye, target, up, vertical
+  // fov and the near and far view depths; the aspect is size.x / size.y. With
+  // cameraFrustumSlice (light_crop.h) a technique gets the world corners of a depth range.
+  CameraDesc cameraSetup{};
+  // Every triangle's vertices as they are this frame, bounded once per upload (moved
+  // objects bound again), not per frame.
+  WorldBounds sceneBounds{};
+
+  float aspect() const { return float(size.x) / float(size.y); }
+};
+
+// One shadow map of a technique's last frame, for the record's light block, which lists them
+// as `maps` (render/shadow_map_pass.h lightSetupRecord): the transforms it was rendered with
+// (a cascade's cropped light, croppedLight in light_crop.h) and, for a map that serves a
+// range of the camera's view depths (a cascade), that range.
+struct ShadowMapUse {
+  LightTransforms light;
+  std::optional<std::array<double, 2>> split;
 };
 
 // Where the technique writes its visibility: an R32F texture of the screen's size with a
@@ -79,6 +100,9 @@ class ShadowTechnique {
   // (`--set debug=discontinuity`): name → RGB image (top-down) of the last frame. `render`
   // writes each as T.<name>.png. Empty unless a parameter asked for them.
   virtual std::vector<std::pair<std::string, ImageF>> debugImages() const { return {}; }
+  // The maps of the last frame when they are not the one map of the frame's light (cascades):
+  // the record lists each (light.maps). Empty, the default: one map of in.light.
+  virtual std::vector<ShadowMapUse> shadowMaps() const { return {}; }
 };
 
 using TechniqueFactory = std::function<std::unique_ptr<ShadowTechnique>()>;
