@@ -101,10 +101,11 @@ TEST(MotionHeldView, MovingLightGroundTruthZeroAndShadowMapCrawls) {
 
 // One light path, the camera orbiting at two speeds (2° and 20° over the run): the
 // figures describe the light's motion, not the camera's, so they agree within
-// kSpeedTolerance relative (what differs is only which pixels sample the receivers).
+// kSpeedTolerance relative (what differs is only which pixels sample the receivers;
+// measured on llvmpipe: flicker 3 %, crawl 3 %, crawl missed 9 % apart).
 TEST(MotionHeldView, MovingLightFiguresDoNotDependOnCameraSpeed) {
   constexpr int kFrames = 6;
-  constexpr double kSpeedTolerance = 0.25;
+  constexpr double kSpeedTolerance = 0.15;
   TempDir tmp;
   const std::vector<std::string> size = {"--size", "160x120", "--shadow-map", "256"};
   json figures[2];
