@@ -61,6 +61,11 @@ TEST(MotionCli, CompareWritesSequenceOutputsAndGroundTruthReadsZero) {
   const json& rmse = sm.at("series").at("rmse");
   EXPECT_LE(rmse.at("mean").get<double>(), rmse.at("max").get<double>());
   EXPECT_EQ(sm.at("temporal").at("frame_pairs").get<int>(), 2);
+  // The camera stays: the previous frame is the held view, nothing is rendered twice. The
+  // blade turns: its pixels see other points from frame to frame and are not paired.
+  EXPECT_EQ(sm.at("temporal").at("held_renders").get<int>(), 0);
+  EXPECT_GT(sm.at("temporal").at("moved_pixels").get<double>(), 0.0);
+  EXPECT_EQ(frames[1].at("temporal").at("held_render").get<bool>(), false);
   expectTemporalZero(readJson(out / "groundtruth_sequence.json"));
   EXPECT_NE(readFile(out / "report.md").find("| sm |"), std::string::npos);
 }

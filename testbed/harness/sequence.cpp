@@ -53,7 +53,8 @@ FrameChange advanceTo(Scene& scene, FrameRunner& runner, int frame) {
   return change;
 }
 
-nlohmann::json SequenceSeries::addFrame(int frame, const Record& record, const TemporalFrame* temporal) {
+nlohmann::json SequenceSeries::addFrame(int frame, const Record& record, const TemporalFrame* temporal,
+                                        const TemporalFrame* held) {
   for (const Metric& m : metricTable()) {
     if (m.path.empty()) continue;  // derived figures (ratios to sm) come from stored ones
     if (const auto value = m.value(record, nullptr)) values_[std::string(m.name)].push_back(*value);
@@ -65,7 +66,7 @@ nlohmann::json SequenceSeries::addFrame(int frame, const Record& record, const T
   compared_ = true;
   std::optional<FramePairTemporal> pair;
   try {
-    pair = accumulator_.addFrame(*temporal);
+    pair = accumulator_.addFrame(*temporal, held);
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error("temporal metrics of " + record.technique + " at frame " + std::to_string(frame) +
                              ": " + e.what());
@@ -74,7 +75,9 @@ nlohmann::json SequenceSeries::addFrame(int frame, const Record& record, const T
     json["temporal"] = {{"flicker", pair->flicker},
                         {"crawl_pct", pair->crawlPct},
                         {"crawl_missed_pct", pair->crawlMissedPct},
-                        {"stable_pairs", pair->stablePairs}};
+                        {"stable_pairs", pair->stablePairs},
+                        {"moved_pixels", pair->movedPixels},
+                        {"held_render", pair->heldRender}};
   return json;
 }
 
@@ -100,9 +103,13 @@ nlohmann::json SequenceSeries::sequenceRecord(const Record& last, const FrameRan
   };
   if (compared_) {
     const TemporalMetrics& t = accumulator_.result();
-    json["temporal"] = {{"flicker", t.flicker},           {"crawl_pct", t.crawlPct},
-                        {"crawl_missed_pct", t.crawlMissedPct}, {"stable_pairs", t.stablePairs},
-                        {"frame_pairs", t.framePairs}};
+    json["temporal"] = {{"flicker", t.flicker},
+                        {"crawl_pct", t.crawlPct},
+                        {"crawl_missed_pct", t.crawlMissedPct},
+                        {"stable_pairs", t.stablePairs},
+                        {"moved_pixels", t.movedPixels},
+                        {"frame_pairs", t.framePairs},
+                        {"held_renders", t.heldRenders}};
   }
   return json;
 }
@@ -123,6 +130,22 @@ std::vector<SequenceOutcome> runFrames(const std::vector<SequenceEntry>& entries
   const int count = range.count();
   for (int k = 0; k < count; ++k) {
     const int frame = range.at(k);
+    // The held views: every entry's visibility and the G-buffer of the previous frame's
+    // scene (its light set-up as fitted then, its objects) through this frame's camera.
+    std::vector<ImageF> held;
+    std::optional<ImageF> heldPositions;
+    if (compare && k > 0 && scene.animation) {
+      const CameraDesc camera = cameraAt(*scene.animation, frame);
+      if (!(camera == scene.camera)) {
+        scene.camera = camera;
+        runner.renderGBuffer();
+        for (Track& track : tracks) {
+          track.session->renderFrame();
+          held.push_back(track.session->visibility());
+        }
+        heldPositions = runner.positions();
+      }
+    }
     advanceTo(scene, runner, frame);
     const glm::mat4 viewProjection = cameraTransforms(scene.camera, float(size.x) / float(size.y)).viewProjection();
     std::optional<ImageF> truth;  // compared: the first entry's visibility, this frame only
@@ -130,14 +153,16 @@ std::vector<SequenceOutcome> runFrames(const std::vector<SequenceEntry>& entries
       Track& track = tracks[e];
       const TechniqueRun run = runner.run(*track.session, entries[e].parameters, k == 0);
       Record record = makeRecord(run, runner, backend);
-      std::optional<TemporalFrame> temporal;
+      std::optional<TemporalFrame> temporal, heldFrame;
       if (compare) {
         if (!truth) truth = run.visibility;
         record.error = computeErrorMetrics(run.visibility, *truth);
         temporal.emplace(TemporalFrame{frame, run.visibility, *truth, runner.positions(), viewProjection});
+        if (heldPositions) heldFrame.emplace(TemporalFrame{frame, held[e], held.front(), *heldPositions, viewProjection});
       }
       if (onFrame) onFrame({k, frame, e, &run, truth ? &*truth : nullptr});
-      track.outcome.frames.push_back(track.series.addFrame(frame, record, temporal ? &*temporal : nullptr));
+      track.outcome.frames.push_back(
+          track.series.addFrame(frame, record, temporal ? &*temporal : nullptr, heldFrame ? &*heldFrame : nullptr));
       track.outcome.last = std::move(record);
     }
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -38,8 +38,10 @@ FrameChange advanceTo(Scene& scene, FrameRunner& runner, int frame);
 class SequenceSeries {
  public:
   // The frame's record as the series file holds it: the record plus "frame",
-  // "light_fit" and, when `temporal` is given and closes a pair, "temporal".
-  nlohmann::json addFrame(int frame, const Record& record, const TemporalFrame* temporal);
+  // "light_fit" and, when `temporal` is given and closes a pair, "temporal". `held` is the
+  // held view of the previous frame when it was rendered apart (TemporalAccumulator::addFrame).
+  nlohmann::json addFrame(int frame, const Record& record, const TemporalFrame* temporal,
+                          const TemporalFrame* held = nullptr);
   // Every stored metric's mean, p95 and max over frames ("series"), the temporal figures
   // when frames were compared ("temporal"), and what was run.
   nlohmann::json sequenceRecord(const Record& last, const FrameRange& range, int fps) const;
@@ -74,7 +76,9 @@ struct SequenceOutcome {
 // The frame loop shared by `compare/render/groundtruth --frames` and sweeps over frames:
 // frames outer, entries inner, each entry's session kept across frames. `compare`: the
 // first entry is the reference every entry's errors and temporal figures are taken
-// against. `onFrame` (may be empty) sees every run, for videos; one progress line per
+// against; at every frame whose camera moved, each entry first renders the held view (the
+// previous frame's scene through the new camera, untimed), which the temporal figures
+// compare the frame with. `onFrame` (may be empty) sees every run, for videos; one progress line per
 // frame with ETA goes to `log`.
 std::vector<SequenceOutcome> runFrames(const std::vector<SequenceEntry>& entries, const FrameRange& range, bool compare,
                                        Scene& scene, FrameRunner& runner, const std::string& backend,

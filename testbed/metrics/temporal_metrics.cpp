@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -58,91 +59,75 @@ void checkFrame(const TemporalFrame& frame, const ImageF* previousGroundTruth) {
   }
 }
 
-glm::dvec3 worldAt(const ImageF& positions, std::size_t i) {
-  return {positions.pixels[i * 4], positions.pixels[i * 4 + 1], positions.pixels[i * 4 + 2]};
+// The G-buffer sees the same surface point at pixel i in both renders: the same bits of
+// position and coverage. Equal inputs rasterize to equal bits, so a static surface passes
+// exactly and no tolerance is needed.
+bool samePoint(const ImageF& a, const ImageF& b, std::size_t i) {
+  return std::memcmp(&a.pixels[i * 4], &b.pixels[i * 4], 4 * sizeof(float)) == 0;
 }
-
-// Where a world point lands in an earlier frame's image, and that frame's pixel footprint
-// there. Pixel (x, y) covers NDC [2x/W - 1, 2(x+1)/W - 1] horizontally; rows are top-down,
-// so row 0 is at NDC y = +1.
-struct Reprojection {
-  std::size_t pixel = 0;
-  double footprint = 0;  // world-space side of one pixel at the point's depth
-};
-
-std::optional<Reprojection> reproject(const glm::dvec3& world, const glm::dmat4& viewProjection,
-                                      const glm::dmat4& inverse, int width, int height) {
-  const glm::dvec4 clip = viewProjection * glm::dvec4(world, 1.0);
-  if (!(clip.w > 0)) return std::nullopt;  // behind the camera
-  const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
-  const double px = (ndc.x + 1) * 0.5 * width, py = (1 - ndc.y) * 0.5 * height;
-  if (!(px >= 0 && px < width && py >= 0 && py < height)) return std::nullopt;
-  // One pixel's step in NDC x and y at the same NDC depth, back in world space.
-  auto unproject = [&](const glm::dvec3& p) {
-    const glm::dvec4 w = inverse * glm::dvec4(p, 1.0);
-    return glm::dvec3(w) / w.w;
-  };
-  const glm::dvec3 centre = unproject(ndc);
-  const double fx = glm::length(unproject(ndc + glm::dvec3(2.0 / width, 0, 0)) - centre);
-  const double fy = glm::length(unproject(ndc + glm::dvec3(0, 2.0 / height, 0)) - centre);
-  return Reprojection{std::size_t(py) * std::size_t(width) + std::size_t(px), std::max(fx, fy)};
-}
-
 
 }  // namespace
 
-TemporalAccumulator::TemporalAccumulator(TemporalOptions options) : options_(options) {
-  if (!(options_.toleranceFootprints > 0) || !std::isfinite(options_.toleranceFootprints))
-    throw std::invalid_argument("temporal metrics: the reprojection tolerance must be a positive number");
+FramePairTemporal TemporalAccumulator::compare(const TemporalFrame& held, const TemporalFrame& frame) {
+  const ImageF &v = frame.visibility, &g = frame.groundTruth;
+  const ImageF &hv = held.visibility, &hg = held.groundTruth;
+  FramePairTemporal figures;
+  figures.frame = frame.frame;
+  double sum = 0;
+  std::size_t crawls = 0, missed = 0;
+  for (std::size_t p = 0; p < g.pixels.size(); ++p) {
+    const bool receiver = !std::isnan(g.pixels[p]), heldReceiver = !std::isnan(hg.pixels[p]);
+    if (!receiver && !heldReceiver) continue;
+    if (!receiver || !heldReceiver || !samePoint(frame.positions, held.positions, p)) {
+      ++figures.movedPixels;
+      continue;
+    }
+    const double dv = double(v.pixels[p]) - double(hv.pixels[p]);
+    const double dg = double(g.pixels[p]) - double(hg.pixels[p]);
+    sum += std::abs(dv - dg);
+    const bool vChanges = isLit(v.pixels[p]) != isLit(hv.pixels[p]);
+    const bool gChanges = isLit(g.pixels[p]) != isLit(hg.pixels[p]);
+    crawls += vChanges && !gChanges;
+    missed += gChanges && !vChanges;
+    ++figures.stablePairs;
+  }
+  figures.flicker = figures.stablePairs == 0 ? 0.0 : sum / double(figures.stablePairs);
+  figures.crawlPct = percent(crawls, figures.stablePairs);
+  figures.crawlMissedPct = percent(missed, figures.stablePairs);
+
+  flickerSum_ += sum;
+  crawls_ += crawls;
+  crawlsMissed_ += missed;
+  result_.stablePairs += figures.stablePairs;
+  result_.movedPixels += figures.movedPixels;
+  result_.framePairs += 1;
+  result_.flicker = result_.stablePairs == 0 ? 0.0 : flickerSum_ / double(result_.stablePairs);
+  result_.crawlPct = percent(crawls_, result_.stablePairs);
+  result_.crawlMissedPct = percent(crawlsMissed_, result_.stablePairs);
+  return figures;
 }
 
-std::optional<FramePairTemporal> TemporalAccumulator::addFrame(const TemporalFrame& frame) {
+std::optional<FramePairTemporal> TemporalAccumulator::addFrame(const TemporalFrame& frame, const TemporalFrame* held) {
   checkFrame(frame, previous_ ? &previous_->groundTruth : nullptr);
+  const std::string at = " (frame " + std::to_string(frame.frame) + ")";
+  if (held) {
+    if (!previous_) throw std::invalid_argument("temporal metrics: a held view is given for the first frame" + at);
+    checkFrame(*held, &frame.groundTruth);
+    if (held->viewProjection != frame.viewProjection)
+      throw std::invalid_argument("temporal metrics: the held view's camera is not the frame's" + at);
+  } else if (previous_ && previous_->viewProjection != frame.viewProjection) {
+    throw std::invalid_argument(
+        "temporal metrics: the camera moved since the previous frame, so the pair needs the held view "
+        "(the previous frame's scene through this camera)" + at);
+  }
   std::optional<FramePairTemporal> pair;
   if (previous_) {
     const Previous& prev = *previous_;
-    const ImageF &v = frame.visibility, &g = frame.groundTruth;
-    const int w = g.width, h = g.height;
-    const bool staticCamera = frame.viewProjection == prev.viewProjection;
-    const glm::dmat4 prevVp(prev.viewProjection), prevInverse = glm::inverse(glm::dmat4(prev.viewProjection));
-    FramePairTemporal figures;
-    figures.frame = frame.frame;
-    double sum = 0;
-    std::size_t crawls = 0, missed = 0;
-    for (std::size_t p = 0; p < g.pixels.size(); ++p) {
-      if (std::isnan(g.pixels[p])) continue;
-      std::size_t q = p;
-      if (!staticCamera) {
-        const glm::dvec3 world = worldAt(frame.positions, p);
-        const auto hit = reproject(world, prevVp, prevInverse, w, h);
-        if (!hit || std::isnan(prev.groundTruth.pixels[hit->pixel])) continue;
-        q = hit->pixel;
-        if (!(glm::length(worldAt(prev.positions, q) - world) <= options_.toleranceFootprints * hit->footprint))
-          continue;  // q sees another surface: a disocclusion
-      } else if (std::isnan(prev.groundTruth.pixels[q])) {
-        continue;
-      }
-      const double dv = double(v.pixels[p]) - double(prev.visibility.pixels[q]);
-      const double dg = double(g.pixels[p]) - double(prev.groundTruth.pixels[q]);
-      sum += std::abs(dv - dg);
-      const bool vChanges = isLit(v.pixels[p]) != isLit(prev.visibility.pixels[q]);
-      const bool gChanges = isLit(g.pixels[p]) != isLit(prev.groundTruth.pixels[q]);
-      crawls += vChanges && !gChanges;
-      missed += gChanges && !vChanges;
-      ++figures.stablePairs;
-    }
-    figures.flicker = figures.stablePairs == 0 ? 0.0 : sum / double(figures.stablePairs);
-    figures.crawlPct = percent(crawls, figures.stablePairs);
-    figures.crawlMissedPct = percent(missed, figures.stablePairs);
-
-    flickerSum_ += sum;
-    crawls_ += crawls;
-    crawlsMissed_ += missed;
-    result_.stablePairs += figures.stablePairs;
-    result_.framePairs += 1;
-    result_.flicker = result_.stablePairs == 0 ? 0.0 : flickerSum_ / double(result_.stablePairs);
-    result_.crawlPct = percent(crawls_, result_.stablePairs);
-    result_.crawlMissedPct = percent(crawlsMissed_, result_.stablePairs);
+    FramePairTemporal figures =
+        held ? compare(*held, frame)
+             : compare({frame.frame, prev.visibility, prev.groundTruth, prev.positions, prev.viewProjection}, frame);
+    figures.heldRender = held != nullptr;
+    result_.heldRenders += figures.heldRender;
     result_.series.push_back(figures);
     pair = figures;
   }

@@ -4,14 +4,14 @@
 // keeps only the previous frame, so its memory does not grow with the number of images.
 //
 // Receivers are the pixels where the ground truth is not NaN (as in metrics.h); binary
-// state: lit <=> value >= 0.5. A pixel p of frame t and a pixel q of frame t-1 form a
-// surface-stable pair when both are receivers and see the same surface point:
-//   - static camera (the two view-projections are equal): q = p;
-//   - moving camera: q is the pixel of frame t-1 nearest to where p's world position
-//     projects in frame t-1, and q's world position lies within `toleranceFootprints`
-//     pixel footprints of p's, the footprint being the world-space side of one pixel of
-//     frame t-1 at that depth (perpendicular to the view ray). Off-screen, behind the
-//     camera or farther (a disocclusion: q sees another surface) -> no pair.
+// state: lit <=> value >= 0.5. Frame t is compared with the *held view* of frame t-1: the
+// scene as it was at t-1 (light, objects and every set-up fitted to them) seen through
+// frame t's camera. Both renders share one camera, so pixel p of one is pixel p of the
+// other: a pair needs no reprojection. Pixel p forms a stable pair when it is a receiver
+// in both renders and their G-buffer positions there are equal (bit for bit, coverage
+// included); a receiver whose positions differ sees another surface point in the other
+// render (a moving object, or what it uncovers) and is counted as moved, not paired.
+// Where the camera did not move the held view is frame t-1 itself.
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -22,15 +22,7 @@
 
 namespace testbed {
 
-struct TemporalOptions {
-  // Nearest-pixel reprojection lands up to half a pixel off in x and y; on a surface seen
-  // at angle theta from its normal that is up to 0.5 * sqrt(1 + 1/cos^2 theta) footprints
-  // of world distance. 2 footprints accept every surface up to theta = 75 degrees and
-  // reject depth gaps wider than two pixels, the disocclusions reprojection must drop.
-  double toleranceFootprints = 2.0;
-};
-
-// One frame of a sequence, all images top-down and of one size.
+// One render, all images top-down and of one size.
 struct TemporalFrame {
   int frame = 0;                 // the scene's frame number, carried into the series
   const ImageF& visibility;      // technique, one channel, NaN where no receiver
@@ -39,13 +31,15 @@ struct TemporalFrame {
   glm::mat4 viewProjection{1};   // the camera's, world -> clip
 };
 
-// Figures of one pair of consecutive frames (t-1, t).
+// Figures of one frame pair (held view of t-1, t).
 struct FramePairTemporal {
   int frame = 0;                  // t, the later frame's number
-  double flicker = 0;             // mean over its stable pairs of |(V_t - V_t-1) - (G_t - G_t-1)|
+  double flicker = 0;             // mean over its stable pairs of |(V_t - V_held) - (G_t - G_held)|
   double crawlPct = 0;            // % of its stable pairs: V's state changes, G's does not
   double crawlMissedPct = 0;      // % of its stable pairs: G's state changes, V's does not
   std::size_t stablePairs = 0;    // the denominator; 0 gives 0 for the three above
+  std::size_t movedPixels = 0;    // receivers in either render whose positions differ: not paired
+  bool heldRender = false;        // the held view was rendered apart (the camera moved)
 };
 
 struct TemporalMetrics {
@@ -53,20 +47,23 @@ struct TemporalMetrics {
   double crawlPct = 0;
   double crawlMissedPct = 0;
   std::size_t stablePairs = 0;    // pooled denominator
+  std::size_t movedPixels = 0;    // summed over frame pairs
   int framePairs = 0;             // frames added - 1 (0 before the second frame)
+  int heldRenders = 0;            // frame pairs whose held view was rendered apart
   std::vector<FramePairTemporal> series;  // one per frame pair, in order
 };
 
 class TemporalAccumulator {
  public:
-  explicit TemporalAccumulator(TemporalOptions options = {});
-
   // Validates the frame (one-channel V and G, four-channel positions, one size for all and
   // for every earlier frame, V not NaN on a receiver, coverage on every receiver, a finite
-  // view-projection) and returns the pair it forms with the previous frame (none for the
-  // first). Throws std::invalid_argument naming the image and, where there is one, the
-  // pixel as (x, y) from the top row; a frame that throws is not added.
-  std::optional<FramePairTemporal> addFrame(const TemporalFrame& frame);
+  // view-projection) and returns the pair it forms (none for the first frame). `held` is
+  // the held view of the previous frame, rendered through this frame's camera (its
+  // viewProjection equal to the frame's); without it the previous frame is the held view,
+  // which needs the previous frame's camera to be this one. Throws std::invalid_argument
+  // naming the image and, where there is one, the pixel as (x, y) from the top row; a
+  // frame that throws is not added.
+  std::optional<FramePairTemporal> addFrame(const TemporalFrame& frame, const TemporalFrame* held = nullptr);
 
   const TemporalMetrics& result() const { return result_; }
   int frames() const { return frames_; }
@@ -76,7 +73,7 @@ class TemporalAccumulator {
     ImageF visibility, groundTruth, positions;
     glm::mat4 viewProjection{1};
   };
-  TemporalOptions options_;
+  FramePairTemporal compare(const TemporalFrame& held, const TemporalFrame& frame);
   std::optional<Previous> previous_;
   TemporalMetrics result_;
   int frames_ = 0;

@@ -26,18 +26,22 @@ std::string sequenceMarkdown(const std::string& scene, const std::vector<nlohman
     out << "Frames " << f.at("first") << ".." << f.at("last") << " step " << f.at("step") << " (" << f.at("count")
         << " frames), " << records.front().at("width") << "x" << records.front().at("height") << ", shadow map "
         << records.front().at("shadow_map") << "², light set-up fitted per frame. Flicker and crawl: "
-        << "docs/motion.md \"Temporal metrics\"; other columns: mean / p95 / max over frames.\n\n";
+        << "docs/motion.md \"Temporal metrics\" (frame t against the previous frame's scene seen through "
+        << "frame t's camera; held renders: frame pairs that needed that extra render because the camera "
+        << "moved; moved pixels: receivers left unpaired because an object moved); other columns: mean / p95 / "
+        << "max over frames.\n\n";
   }
-  out << "| technique | flicker | crawl % | crawl missed % | stable pairs |";
+  out << "| technique | flicker | crawl % | crawl missed % | stable pairs | moved pixels | held renders |";
   for (const Metric* m : columns) out << " " << m->heading << " |";
-  out << "\n|---|---:|---:|---:|---:|";
+  out << "\n|---|---:|---:|---:|---:|---:|---:|";
   for (std::size_t i = 0; i < columns.size(); ++i) out << "---:|";
   out << "\n";
   for (const auto& r : records) {
     out << "| " << r.at("technique").get<std::string>() << " | "
         << formatFixed(at(r, "/temporal/flicker"), 5) << " | " << formatFixed(at(r, "/temporal/crawl_pct"), 4)
         << " | " << formatFixed(at(r, "/temporal/crawl_missed_pct"), 4) << " | "
-        << formatFixed(at(r, "/temporal/stable_pairs"), 0) << " |";
+        << formatFixed(at(r, "/temporal/stable_pairs"), 0) << " | " << formatFixed(at(r, "/temporal/moved_pixels"), 0)
+        << " | " << formatFixed(at(r, "/temporal/held_renders"), 0) << " |";
     for (const Metric* m : columns) {
       const std::string base = "/series/" + std::string(m->name);
       out << " " << formatFixed(at(r, base + "/mean"), m->digits) << " / "
