@@ -144,9 +144,12 @@ TEST(RecordedCommand, IntegerAndFramesOptionsRefuseWhatDoesNotParse) {
     // The same message from both commands: one parser.
     EXPECT_EQ(corpus.err, worst.err);
   }
-  EXPECT_TRUE(runTestbed({"worst", "--scene", kWall, "--technique", "sm", "--budget", "1", "--map-sizes", "+64",
-                          "--out", (tmp / "worst").string()})
-                  .err.find("--map-sizes: expected sizes") != std::string::npos);
+  for (const std::string sizes : {"+64", "64,", ",64", "64,,128", "0", ""}) {
+    const RunResult run = runTestbed({"worst", "--scene", kWall, "--technique", "sm", "--budget", "1", "--map-sizes",
+                                      sizes, "--out", (tmp / "worst").string()});
+    EXPECT_TRUE(rejectedWithOneLine(run)) << sizes;
+    EXPECT_NE(run.err.find("--map-sizes: expected sizes"), std::string::npos) << run.err;
+  }
   // An empty --frames is refused, never read as "not given" (frame 0 alone).
   for (const char* command : {"render", "groundtruth", "compare"}) {
     SCOPED_TRACE(command);

@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <iostream>
 #include <tuple>
-#include <sstream>
 
 #include "groundtruth/shadow_volumes.h"
 #include "testbed/app/commands.h"
@@ -59,15 +58,18 @@ std::pair<double, double> parseElevation(const std::string& text) {
 
 std::vector<int> parseMapSizes(const std::string& text) {
   std::vector<int> sizes;
-  std::stringstream in(text);
-  for (std::string part; std::getline(in, part, ',');) try {
+  for (std::size_t start = 0;;) {  // every part between commas, an empty one too ("64,")
+    const std::size_t comma = text.find(',', start);
+    const std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    try {
       sizes.push_back(int(parseInteger("--map-sizes", part, 1, kMaxShadowMapSize)));
     } catch (const InputError&) {
       throw InputError("--map-sizes: expected sizes 1.." + std::to_string(kMaxShadowMapSize) +
                        " separated by commas, got '" + oneLine(text) + "'");
     }
-  if (sizes.empty()) throw InputError("--map-sizes: expected at least one size");
-  return sizes;
+    if (comma == std::string::npos) return sizes;
+    start = comma + 1;
+  }
 }
 
 // One configuration's figures: the technique's metric and, with a baseline, the baseline's.

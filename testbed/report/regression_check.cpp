@@ -205,6 +205,9 @@ CheckReport compareRecords(const std::vector<CheckRecord>& baseline, const std::
       throw InputError(c.file + ": " + label(c) + ": made on the " + std::string(pathName(*c.record.path)) +
                        " path, the baseline's (" + b.file + ") on the " + std::string(pathName(*b.record.path)) +
                        " path; check compares runs of one path (--path)");
+    if (b.record.path.has_value() != c.record.path.has_value())
+      addNote(report, "records made before the path was recorded (no `path` key) are compared as if on the other "
+                      "side's path; refresh the baseline with scripts/baselines.sh.");
     matched[c.key()] = true;
     ++report.compared;
 

@@ -68,6 +68,16 @@ TEST(ReportHtml, PageDataHoldsNoMarkupAndReadsBack) {
   EXPECT_EQ(parsed["title"], hostile);
   EXPECT_EQ(parsed["notes"][0], hostile);
   EXPECT_EQ(parsed["sections"][0]["items"][0]["text"], hostile);
+  // The report script and style, embedded as they are, hold none either: exactly the two
+  // script elements open and close.
+  auto count = [&](const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = page.find(what); at != std::string::npos; at = page.find(what, at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count("<script"), 2u);
+  EXPECT_EQ(count("</script"), 2u);
+  EXPECT_EQ(count("<!--"), 0u);
 }
 
 // A sweep entry shows the paper's figures only in columns that have any: a study of one's
