@@ -67,13 +67,15 @@ TEST(RecordedCommand, SweepsCommandIsQuotedNamesItsPluginAndReproducesTheRun) {
 // command re-runs from another folder holding the same shards.
 TEST(RecordedCommand, MergesCommandKeepsShardsThatLookLikeOptions) {
   TempDir tmp("recorded-merge");
-  for (const char* folder : {"first", "again"})
+  for (const char* folder : {"first", "again"}) {
+    fs::create_directories(tmp / folder);
     for (const char* shard : {"1/2", "2/2"}) {
       const std::string name = std::string("-d") + shard[0];
       const RunResult run = runTestbed({"sweep", "--spec", tinySpecFile().string(), "--shard", shard, "--out=" + name},
                                        {.cwd = tmp / folder});
       ASSERT_EQ(run.exitCode, 0) << run.describe();
     }
+  }
   const RunResult merged =
       runTestbed({"merge", "--no-plot", "--out", kInjectingOut, "--", "-d1", "-d2"}, {.cwd = tmp / "first"});
   ASSERT_EQ(merged.exitCode, 0) << merged.describe();
@@ -170,7 +172,7 @@ TEST(RecordedCommand, MarkdownTextNeverOpensALineOrACell) {
   const std::string hostile = "a\n# heading | cell `code` *em* [link](x) <script>_b_";
   EXPECT_EQ(markdownText(hostile), "a<br># heading \\| cell \\`code\\` \\*em\\* \\[link\\](x) &lt;script>\\_b\\_");
   EXPECT_EQ(markdownText("distance_transform"), "distance_transform");
-  EXPECT_EQ(markdownCode("pass\nname | `x`"), "``pass name \\| `x```");
+  EXPECT_EQ(markdownCode("pass\nname | `x`"), "`` pass name \\| `x` ``");
   EXPECT_EQ(markdownCode("`edge"), "`` `edge ``");
   EXPECT_EQ(markdownCode("sm"), "`sm`");
 
@@ -213,7 +215,7 @@ TEST(RecordedCommand, PluginTextNeverSplitsAListLineOrATableRow) {
   std::istringstream lines(md.out);
   int rows = 0;
   for (std::string line; std::getline(lines, line);) {
-    ASSERT_EQ(line.rfind("| ", 0), 0u) << line;
+    ASSERT_EQ(line.rfind("|", 0), 0u) << line;
     // Unescaped '|': the cell borders.
     int borders = 0;
     for (std::size_t i = 0; i < line.size(); ++i) borders += line[i] == '|' && (i == 0 || line[i - 1] != '\\');
@@ -242,7 +244,7 @@ TEST(RecordedCommand, PageDataOfAHostileSceneNameParsesBack) {
   const std::size_t start = page.find(open) + open.size();
   const std::string data = page.substr(start, page.find("</script>", start) - start);
   for (const char* forbidden : {"<", ">", "&"}) EXPECT_EQ(data.find(forbidden), std::string::npos) << forbidden;
-  EXPECT_NE(json::parse(data).dump().find(json(name).dump()), std::string::npos);
+  EXPECT_NE(json::parse(data).dump().find(name), std::string::npos);
 }
 
 }  // namespace
