@@ -88,8 +88,12 @@ if isinstance(scenes, dict):
 json.dump(spec, open(path, "w"), indent=1, sort_keys=True)
 open(path, "a").write("\n")
 PY
+# The command as bash reads it back (each word quoted with %q): pasted, it runs this again.
+printf -v recorded ' %q' --seed "$seed" --count "$count" --techniques "$techniques" --shadow-maps "$maps" \
+  --stats-map "$stats_map" --out "$out"
+if [ ${#extra[@]} -gt 0 ]; then printf -v more ' %q' -- "${extra[@]}"; recorded+="$more"; fi
 {
-  echo "scripts/corpus.sh --seed $seed --count $count --techniques $techniques --shadow-maps $maps --stats-map $stats_map ${extra[*]}"
+  echo "scripts/corpus.sh$recorded"
   echo "sweep: 640x360, shadow maps $maps, $count scenes in ${seconds} s on $(nproc) cores, $(date -u +%Y-%m-%d)"
   echo "testbed: $(git -C "$repo" rev-parse --short HEAD 2>/dev/null || echo unknown)"
 } > "$work/sweep/command.txt"

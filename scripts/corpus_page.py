@@ -18,8 +18,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import metric_table  # noqa: E402
-
-DATA = re.compile(r'(<script type="application/json" id="page-data">)(.*?)(</script>)', re.S)
+from page_data import PAGE_DATA, script_safe_json  # noqa: E402
 
 
 class InputError(Exception):
@@ -143,10 +142,10 @@ def main(argv):
     try:
         with open(page_path, encoding="utf-8") as f:
             page = f.read()
-        match = DATA.search(page)
+        match = PAGE_DATA.search(page)
         if not match:
             raise InputError(f"{page_path}: no page-data script (not a testbed report page)")
-        data = json.loads(match.group(2).replace("<\\/", "</"))
+        data = json.loads(match.group(2))
         stats = read_json(os.path.join(folder, "stats", "stats.json"))
         cost = read_json(os.path.join(folder, "cost", "cost.json"))
         records = read_json(os.path.join(folder, "records.json"))
@@ -176,9 +175,10 @@ def main(argv):
     data["notes"] = notes + data.get("notes", [])[before["notes"]:]
     data["sections"] = added + data.get("sections", [])[before["sections"]:]
     data["corpus_page"] = {"notes": len(notes), "sections": len(added)}
-    text = json.dumps(data, ensure_ascii=False).replace("</", "<\\/")
+    text = script_safe_json(data)
     page = page[:match.start(2)] + text + page[match.end(2):]
-    page = re.sub(r"<title>.*?</title>", f"<title>{html.escape(data['title'])}</title>", page, count=1, flags=re.S)
+    title = f"<title>{html.escape(data['title'])}</title>"
+    page = re.sub(r"<title>.*?</title>", lambda _: title, page, count=1, flags=re.S)  # no group references
     with open(page_path + ".tmp", "w", encoding="utf-8") as f:
         f.write(page)
     os.replace(page_path + ".tmp", page_path)

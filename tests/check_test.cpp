@@ -115,4 +115,59 @@ TEST(CliCheck, BadInputExitsTwoNamingTheFile) {
   }
 }
 
+// Records of the paper path against records of the fast path: their passes and memory
+// differ by design (docs/paths.md), so check refuses the pair in one line, as merge does,
+// instead of reporting every fast-only pass as a regression.
+TEST(CliCheck, RunsOfTwoPathsAreRefused) {
+  TempDir tmp;
+  json paper = bunny512(), fast = bunny512();
+  for (auto& record : paper) record["path"] = "paper";
+  for (auto& record : fast) record["path"] = "fast";
+  writeFile(tmp / "paper" / "metrics.json", paper.dump());
+  writeFile(tmp / "fast" / "metrics.json", fast.dump());
+  const RunResult r = check({"--baseline", (tmp / "paper").string(), "--current", (tmp / "fast").string()}, tmp);
+  EXPECT_EQ(r.exitCode, 2) << r.err << r.out;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("made on the fast path, the baseline's (" + (tmp / "paper" / "metrics.json").string() +
+                       ") on the paper path"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.out, "");
+  // One path on both sides compares as before.
+  const RunResult same = check({"--baseline", (tmp / "paper").string(), "--current", (tmp / "paper").string()}, tmp);
+  EXPECT_EQ(same.exitCode, 0) << same.err << same.out;
+}
+
+// A pass name, scene or backend read from a record is text, not Markdown: a line break,
+// '#', '|', backticks or HTML in it stay inside the finding's line and read as themselves.
+TEST(CliCheck, TextFromRecordsCannotBreakTheReport) {
+  TempDir tmp;
+  const std::string pass = "p\n# Injected heading | `x` <img src=x>";
+  json baseline = bunny512();
+  for (auto& record : baseline) {
+    record["scene"] = "bunny\n# scene";
+    if (!record["work"].is_object() || !record["work"]["passes"].contains("visibility")) continue;
+    json& passes = record["work"]["passes"];
+    passes[pass] = passes["visibility"];
+    passes.erase("visibility");
+  }
+  json current = baseline;
+  json& work = current[indexOf(current, "pcf")]["work"];
+  for (auto& [counter, count] : work["passes"][pass].items()) {
+    const std::uint64_t more = count.get<std::uint64_t>() * 2 + 1000;  // beyond any tolerance
+    count = count.get<std::uint64_t>() + more;
+    work["total"][counter] = work["total"][counter].get<std::uint64_t>() + more;
+  }
+  writeFile(tmp / "baseline" / "metrics.json", baseline.dump());
+  writeFile(tmp / "current" / "metrics.json", current.dump());
+  const RunResult r = check({"--baseline", (tmp / "baseline").string(), "--current", (tmp / "current").string()}, tmp);
+  EXPECT_EQ(r.exitCode, 3) << r.err << r.out;
+  EXPECT_NE(r.out.find("- bunny<br># scene · pcf · 512²"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("pass ``p # Injected heading \\| `x` <img src=x>`` "), std::string::npos) << r.out;
+  std::istringstream lines(r.out);
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind("#", 0) == 0)
+      EXPECT_TRUE(line == "# Regression check" || line.rfind("## ", 0) == 0) << line;
+}
+
 }  // namespace

@@ -3,7 +3,9 @@
 python3-selenium and chromium-driver; started and stopped here): a tiny compare, a tiny
 compare --frames, a tiny sweep and a tiny scripts/corpus.sh each write one, opened over file:// it logs no console
 error, asks for nothing but file: and data: URLs, and its screenshots are not blank; on
-compare's page a key press flips the viewer between the technique and the reference.
+compare's page a key press flips the viewer between the technique and the reference. A
+compare and a sweep whose scene name, labels and --out folder hold "<!--<script>" and
+"</script>" write pages whose data still parses and whose report script still runs.
 
 usage: html_report_test.py TESTBED_BINARY OUTPUT_FOLDER
 The screenshots stay in OUTPUT_FOLDER/screenshots (docs/html-report.md)."""
@@ -47,6 +49,32 @@ def start_chromium():
     return webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
 
 
+# Text that ends a script element, or opens a comment that makes the parser swallow the
+# report script after the data (HTML Living Standard, "script data escaped" states).
+HOSTILE = "<!--<script> a </script> & \u2028 b"
+HOSTILE_FOLDER = "<!--<script>"  # a folder name cannot hold '/'
+
+
+def hostile_inputs(folder):
+    """A copy of the wall scene and of the tiny sweep spec whose names hold HOSTILE."""
+    with open(os.path.join(REPO, "scenes", "wall.json"), encoding="utf-8") as f:
+        scene = json.load(f)
+    scene["name"] = "wall " + HOSTILE
+    scene_path = os.path.join(folder, "hostile_wall.json")
+    with open(scene_path, "w", encoding="utf-8") as f:
+        json.dump(scene, f)
+    with open(os.path.join(HERE, "data", "sweep_tiny.json"), encoding="utf-8") as f:
+        spec = json.load(f)
+    spec["title"] = "title " + HOSTILE
+    spec["citation"] = "citation " + HOSTILE
+    spec["scenes"] = {"wall": scene_path}
+    spec["rows"][0]["label"] = "row " + HOSTILE
+    spec_path = os.path.join(folder, "hostile_spec.json")
+    with open(spec_path, "w", encoding="utf-8") as f:
+        json.dump(spec, f)
+    return scene_path, spec_path
+
+
 def variance_of(png_bytes):
     pixels = np.asarray(Image.open(io.BytesIO(png_bytes)).convert("L"), dtype=np.float64)
     return float(pixels.var())
@@ -66,6 +94,8 @@ class HtmlReports(unittest.TestCase):
             "sequence": os.path.join(OUT, "sequence"),
             "sweep": os.path.join(OUT, "sweep"),
             "corpus": os.path.join(OUT, "corpus"),
+            "hostile-compare": os.path.join(OUT, "compare " + HOSTILE_FOLDER),
+            "hostile-sweep": os.path.join(OUT, "sweep " + HOSTILE_FOLDER),
         }
         testbed("compare", "--scene", os.path.join(REPO, "scenes", "bunny.json"), "--techniques", "sm,pcf",
                 "--size", "320x180", "--shadow-map", "256", "--out", cls.runs["compare"])
@@ -74,6 +104,10 @@ class HtmlReports(unittest.TestCase):
                 "--out", cls.runs["sequence"])
         testbed("sweep", "--spec", os.path.join(HERE, "data", "sweep_tiny.json"),
                 "--out", cls.runs["sweep"])
+        scene, spec = hostile_inputs(OUT)
+        testbed("compare", "--scene", scene, "--techniques", "sm", "--size", "160x90", "--shadow-map", "128",
+                "--out", cls.runs["hostile-compare"])
+        testbed("sweep", "--spec", spec, "--out", cls.runs["hostile-sweep"])
         corpus = subprocess.run([os.path.join(REPO, "scripts", "corpus.sh"), "--seed", "7", "--count", "2",
                                  "--techniques", "sm,pcf", "--shadow-maps", "128,256", "--stats-map", "256",
                                  "--out", cls.runs["corpus"]], capture_output=True, text=True,
@@ -95,7 +129,7 @@ class HtmlReports(unittest.TestCase):
         self.browser.get("file://" + os.path.join(self.runs[run], "index.html"))
         WebDriverWait(self.browser, 30).until(
             lambda b: b.execute_script("return document.readyState") == "complete")
-        if run == "compare":
+        if run.endswith("compare"):
             WebDriverWait(self.browser, 30).until(
                 lambda b: b.execute_script("return document.querySelector('.viewer').dataset.ready") == "true")
 
@@ -147,6 +181,19 @@ class HtmlReports(unittest.TestCase):
             self.assertEqual(len(self.browser.find_elements(By.ID, target)), 1, target)
         self.assertTrue(self.browser.find_elements(By.CSS_SELECTOR, "img[src^='stats/']"), "no box plots")
         self.assertTrue(self.browser.find_elements(By.CSS_SELECTOR, "img[src^='cost/']"), "no Pareto plots")
+
+    def test_hostile_names_stay_data(self):
+        for run, expected in (("hostile-compare", "wall " + HOSTILE), ("hostile-sweep", "row " + HOSTILE)):
+            with self.subTest(run=run):
+                self.open(run, VIEWPORTS[0])
+                data = self.browser.execute_script(
+                    "return JSON.parse(document.getElementById('page-data').textContent)")
+                self.assertIn(expected, json.dumps(data, ensure_ascii=False))
+                # The report script ran: it filled <main> (a swallowed script leaves it empty).
+                self.assertGreater(self.browser.execute_script(
+                    "return document.getElementById('main').children.length"), 0)
+                self.assertEqual(len(self.browser.find_elements(By.CSS_SELECTOR, "script")), 2)
+                self.assert_clean(run)
 
     def pane_pixels(self):
         return self.browser.execute_script(

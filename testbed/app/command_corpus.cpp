@@ -13,17 +13,6 @@ namespace {
 
 constexpr std::uint64_t kMaxCount = 10000;
 
-// A decimal integer in [lo, hi], all of `text`; else InputError naming the option.
-std::uint64_t parseInteger(const std::string& option, const std::string& text, std::uint64_t lo, std::uint64_t hi) {
-  std::uint64_t value = 0;
-  const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, value);
-  if (text.empty() || error != std::errc() || stop != end || value < lo || value > hi)
-    throw InputError(option + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" +
-                     oneLine(text) + "'");
-  return value;
-}
-
 }  // namespace
 
 CommandRunner addCorpusCommand(CLI::App& app) {

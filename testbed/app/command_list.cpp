@@ -5,6 +5,7 @@
 
 #include "testbed/app/commands.h"
 #include "testbed/app/plugins.h"
+#include "testbed/core/messages.h"
 
 namespace testbed {
 namespace {
@@ -53,13 +54,15 @@ CommandRunner addListCommand(CLI::App& app) {
       std::cout << all.dump(2) << "\n";
       return 0;
     }
+    // One line per fact: a plugin's text with a line break or control character in it
+    // must not start a line of its own (oneLine).
     for (const auto& t : techniques) {
-      std::cout << t.info->id << "  [" << t.info->family << ", "
-                << (t.info->output == OutputKind::Hard ? "hard" : "filtered") << "]  " << t.info->summary
-                << "\n    " << t.info->citation << "\n";
+      std::cout << t.info->id << "  [" << oneLine(t.info->family) << ", "
+                << (t.info->output == OutputKind::Hard ? "hard" : "filtered") << "]  " << oneLine(t.info->summary)
+                << "\n    " << oneLine(t.info->citation) << "\n";
       for (const auto& spec : t.info->parameters)
-        std::cout << "    --set " << spec.name << "=" << formatValue(spec.defaultValue) << "  ("
-                  << typeName(spec.type) << ") " << spec.help << "\n";
+        std::cout << "    --set " << spec.name << "=" << oneLine(formatValue(spec.defaultValue)) << "  ("
+                  << typeName(spec.type) << ") " << oneLine(spec.help) << "\n";
     }
     return 0;
   }};

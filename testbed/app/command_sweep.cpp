@@ -290,10 +290,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
           files.writeImage(figureFileName(cell, "png"), figureImages.at(cell).shaded);
         }
 
-    std::string commandLine = "testbed sweep --spec " + options->spec + " --shard " + shard.text();
-    for (const char* flag : {"--size", "--shadow-map", "--depth-format", "--repeat", "--path"})
-      if (command->count(flag)) commandLine += std::string(" ") + flag + " " + command->get_option(flag)->as<std::string>();
-    commandLine += " --backend " + options->common.backend + " --out " + options->common.out;
+    const std::string line = commandLine(*command);
     const nlohmann::json manifest = {
         {"spec", spec.name},
         {"spec_file", spec.file.string()},
@@ -303,7 +300,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
         {"shard", shard.text()},
         {"cells", plan.cells.size()},
         {"resumed_cells", finished.size()},
-        {"command", commandLine},
+        {"command", line},
         {"host", hostDescription()},
         {"backend", backend},
         {"seconds", std::chrono::duration<double>(Clock::now() - start).count()},
@@ -314,7 +311,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
     const bool whole = shard.count == 1;
     if (whole) {
       stageSweepReport(files, spec, plan, records,
-                       {{"command", commandLine}, {"machine", hostDescription()}, {"backend", backend},
+                       {{"command", line}, {"machine", hostDescription()}, {"backend", backend},
                         {"build", manifest["build"]}},
                        figureImages, !options->noPlot);
     }

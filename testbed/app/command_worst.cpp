@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <iostream>
 #include <tuple>
-#include <sstream>
 
 #include "groundtruth/shadow_volumes.h"
 #include "testbed/app/commands.h"
@@ -33,7 +32,7 @@ struct WorstOptions {
   CommonOptions common;
   std::string scene, technique, against, metric = "mismatch_pct", elevation = "3:85", mapSizes = "256,512,1024";
   int budget = 0, k = 1;
-  std::uint64_t seed = 1;
+  std::string seed = "1";
   bool fixedCamera = false;
 };
 
@@ -59,22 +58,18 @@ std::pair<double, double> parseElevation(const std::string& text) {
 
 std::vector<int> parseMapSizes(const std::string& text) {
   std::vector<int> sizes;
-  std::stringstream in(text);
-  for (std::string part; std::getline(in, part, ',');) {
-    std::size_t used = 0;
-    int size = 0;
+  for (std::size_t start = 0;;) {  // every part between commas, an empty one too ("64,")
+    const std::size_t comma = text.find(',', start);
+    const std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     try {
-      size = std::stoi(part, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != part.size() || size < 1 || size > kMaxShadowMapSize)
+      sizes.push_back(int(parseInteger("--map-sizes", part, 1, kMaxShadowMapSize)));
+    } catch (const InputError&) {
       throw InputError("--map-sizes: expected sizes 1.." + std::to_string(kMaxShadowMapSize) +
-                       " separated by commas, got '" + text + "'");
-    sizes.push_back(size);
+                       " separated by commas, got '" + oneLine(text) + "'");
+    }
+    if (comma == std::string::npos) return sizes;
+    start = comma + 1;
   }
-  if (sizes.empty()) throw InputError("--map-sizes: expected at least one size");
-  return sizes;
 }
 
 // One configuration's figures: the technique's metric and, with a baseline, the baseline's.
@@ -132,6 +127,7 @@ int runWorst(const CLI::App& command, const WorstOptions& o) {
   if (o.k > o.budget)
     throw InputError("--k: " + std::to_string(o.k) + " is more than --budget " + std::to_string(o.budget) +
                      " (the search reports only configurations it rendered)");
+  const std::uint64_t seed = parseInteger("--seed", o.seed, 0, UINT64_MAX);
   WorstSpace space;
   std::tie(space.elevationMin, space.elevationMax) = parseElevation(o.elevation);
   space.mapSizes = parseMapSizes(o.mapSizes);
@@ -164,7 +160,7 @@ int runWorst(const CLI::App& command, const WorstOptions& o) {
   }
   const Evaluator evaluate(settings, metric, technique, baseline, context->description());
 
-  WorstSearch search(o.seed, std::size_t(o.budget));
+  WorstSearch search(seed, std::size_t(o.budget));
   const auto start = std::chrono::steady_clock::now();
   const std::string what = o.technique + " " + o.metric + (baseline ? " over " + o.against + "'s" : "");
   while (!search.done()) {
@@ -190,10 +186,15 @@ int runWorst(const CLI::App& command, const WorstOptions& o) {
     const Scene written = parseScene(nlohmann::json::parse(document.dump()), destination);
     const Evaluation e = evaluate(written, c.shadowMap);
     files.writeText(names[i + 1], document.dump(2) + "\n");
-    std::string compare = "testbed compare --scene " + names[i + 1] + " --techniques " + o.technique +
-                          (baseline ? "," + o.against : "") + " --size " + o.common.size + " --shadow-map " +
-                          std::to_string(c.shadowMap) + " --backend " + o.common.backend;
-    if (!o.common.path.empty()) compare += " --path " + o.common.path;
+    // Run from --out (the case's file named as written); every setting the figure depends on.
+    std::vector<std::string> compare = {"testbed", "compare", "--scene", names[i + 1], "--techniques",
+                                        o.technique + (baseline ? "," + o.against : ""), "--size", o.common.size,
+                                        "--shadow-map", std::to_string(c.shadowMap), "--depth-format",
+                                        o.common.depthFormat, "--backend", o.common.backend};
+    if (!o.common.path.empty()) compare.insert(compare.end(), {"--path", o.common.path});
+    for (const std::string& plugin : o.common.plugins)
+      compare.insert(compare.end(), {"--plugin", fs::absolute(plugin).lexically_normal().string()});
+    compare.insert(compare.end(), {"--out", "DIR"});
     nlohmann::json entry = {{"file", names[i + 1]},
                             {"figure", e.figure()},
                             {"technique_value", e.technique},
@@ -202,7 +203,7 @@ int runWorst(const CLI::App& command, const WorstOptions& o) {
                             {"shadow_map", c.shadowMap},
                             {"light_elevation_deg", c.lightElevation},
                             {"light_azimuth_deg", c.lightAzimuth},
-                            {"compare", compare + " --out DIR"}};
+                            {"compare", shellCommand(compare)}};
     if (e.baseline) entry["baseline_value"] = *e.baseline;
     cases.push_back(entry);
   }
@@ -215,7 +216,7 @@ int runWorst(const CLI::App& command, const WorstOptions& o) {
       {"figure", baseline ? o.metric + " of " + o.technique + " minus " + o.metric + " of " + o.against
                           : o.metric + " of " + o.technique},
       {"budget", o.budget},
-      {"seed", o.seed},
+      {"seed", seed},
       {"size", o.common.size},
       {"map_sizes", space.mapSizes},
       {"elevation_deg", {space.elevationMin, space.elevationMax}},
@@ -241,7 +242,7 @@ CommandRunner addWorstCommand(CLI::App& app) {
   command->add_option("--metric", options->metric, "an error metric of the metric table")->capture_default_str();
   command->add_option("--budget", options->budget, "configurations to render")->required();
   command->add_option("--k", options->k, "how many of the worst to write")->capture_default_str();
-  command->add_option("--seed", options->seed, "random seed")->capture_default_str();
+  command->add_option("--seed", options->seed, "random seed (an integer, 0 to 2^64-1)")->capture_default_str();
   command->add_option("--elevation", options->elevation, "light elevation range MIN:MAX, degrees")->capture_default_str();
   command->add_option("--map-sizes", options->mapSizes, "shadow-map sizes to try, comma-separated")->capture_default_str();
   command->add_flag("--fixed-camera", options->fixedCamera, "keep the scene's camera (search the light and map only)");

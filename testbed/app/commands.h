@@ -49,7 +49,16 @@ void addNoPlotFlag(CLI::App& command, bool& noPlot);
 // The parsed `command` as a shell command line that runs it again ("testbed worst --scene
 // s.json --technique sm ..."): every option given, in the order the command declares
 // them, positional arguments last. For the manifests that name what made them.
+// A positional argument that begins with '-' comes after "--".
 std::string commandLine(const CLI::App& command);
+// `words` (the program, then its arguments) as one POSIX shell command line that runs them
+// as given: each word single-quoted where the shell would read it otherwise. Every
+// recorded command is written by it (through commandLine where it is the command's own).
+std::string shellCommand(const std::vector<std::string>& words);
+
+// A decimal integer in [lo, hi], all of `text` (no sign, no space); else InputError naming
+// `option`. Every integer option given as text is read by it.
+std::uint64_t parseInteger(const std::string& option, const std::string& text, std::uint64_t lo, std::uint64_t hi);
 
 // "1280x720" → {1280, 720}; throws InputError("--size: ...").
 glm::ivec2 parseSize(const std::string& text);

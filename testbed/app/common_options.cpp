@@ -5,6 +5,8 @@
 
 #include "testbed/app/commands.h"
 #include "testbed/core/error.h"
+#include "testbed/core/messages.h"
+#include "testbed/harness/sequence.h"
 
 namespace testbed {
 
@@ -42,7 +44,22 @@ void addSetOption(CLI::App& command, std::vector<std::string>& assignments, cons
 }
 
 void addFramesOption(CLI::App& command, std::string& frames) {
-  command.add_option("--frames", frames, "frames of an animated scene: all, or A:B[:STEP] (docs/motion.md)");
+  // The commands read an empty `frames` as "not given": an empty value given is refused
+  // here, with the message of the one frames parser.
+  const CLI::Validator notEmpty(
+      [](const std::string& text) -> std::string {
+        if (!text.empty()) return "";
+        try {
+          parseFrameRange(text, Scene{});
+        } catch (const InputError& error) {  // CLI11 puts the option's name before it
+          const std::string what = error.what(), prefix = "--frames: ";
+          return what.starts_with(prefix) ? what.substr(prefix.size()) : what;
+        }
+        return "";
+      },
+      "");
+  command.add_option("--frames", frames, "frames of an animated scene: all, or A:B[:STEP] (docs/motion.md)")
+      ->check(notEmpty);
 }
 
 void addNoPlotFlag(CLI::App& command, bool& noPlot) {
@@ -65,26 +82,51 @@ std::string shellWord(const std::string& word) {
 
 }  // namespace
 
+std::string shellCommand(const std::vector<std::string>& words) {
+  std::string line;
+  for (const std::string& word : words) line.append(line.empty() ? "" : " ").append(shellWord(word));
+  return line;
+}
+
 std::string commandLine(const CLI::App& command) {
-  std::string line = "testbed " + command.get_name(), positionals;
+  std::vector<std::string> words{"testbed", command.get_name()}, positionals;
   for (const CLI::Option* option : command.get_options()) {
     if (option->count() == 0) continue;
     if (!option->nonpositional()) {
-      for (const std::string& value : option->results()) positionals.append(" ").append(shellWord(value));
+      positionals.insert(positionals.end(), option->results().begin(), option->results().end());
       continue;
     }
     const std::string name = option->get_name();
     if (option->get_expected_max() == 0) {  // a flag
-      for (std::size_t i = 0; i < option->count(); ++i) line.append(" ").append(name);
+      words.insert(words.end(), option->count(), name);
       continue;
     }
     const bool eachValueNamed = option->get_expected_max() <= 1;
     for (std::size_t i = 0; i < option->results().size(); ++i) {
-      if (i == 0 || eachValueNamed) line.append(" ").append(name);
-      line.append(" ").append(shellWord(option->results()[i]));
+      const std::string& value = option->results()[i];
+      if (value.starts_with("-")) {  // as a word of its own it would read back as an option
+        words.push_back(name + "=" + value);
+        continue;
+      }
+      if (i == 0 || eachValueNamed) words.push_back(name);
+      words.push_back(value);
     }
   }
-  return line + positionals;
+  // A positional such as a shard folder "-d1" would read back as an option.
+  if (std::any_of(positionals.begin(), positionals.end(), [](const std::string& p) { return p.starts_with("-"); }))
+    words.push_back("--");
+  words.insert(words.end(), positionals.begin(), positionals.end());
+  return shellCommand(words);
+}
+
+std::uint64_t parseInteger(const std::string& option, const std::string& text, std::uint64_t lo, std::uint64_t hi) {
+  std::uint64_t value = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (text.empty() || error != std::errc() || stop != end || value < lo || value > hi)
+    throw InputError(option + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" +
+                     oneLine(text) + "'");
+  return value;
 }
 
 glm::ivec2 parseSize(const std::string& text) {

@@ -7,7 +7,9 @@
 #include <sstream>
 
 #include "testbed/core/error.h"
+#include "testbed/core/markdown_text.h"
 #include "testbed/io/json_input.h"
+#include "testbed/technique/path.h"
 
 namespace testbed {
 namespace {
@@ -33,8 +35,8 @@ std::string formatValue(const Metric& metric, double value) {
 std::string label(const CheckRecord& c) {
   const Record& r = c.record;
   std::ostringstream out;
-  out << r.scene << " · " << r.technique << " · " << r.shadowMap << "² (" << r.width << "×" << r.height << ", depth "
-      << r.depthFormat << ")";
+  out << markdownText(r.scene) << " · " << markdownText(r.technique) << " · " << r.shadowMap << "² (" << r.width << "×" << r.height << ", depth "
+      << markdownText(r.depthFormat) << ")";
   return out.str();
 }
 
@@ -49,7 +51,7 @@ std::string findingLine(const Finding& f) {
   line << "- " << label(*f.record) << ": ";
   if (f.kind == FindingKind::New) return line.str() + "new, not in the baseline\n";
   if (!f.metric) return line.str() + "missing from the current run\n";
-  if (!f.pass.empty()) line << "pass `" << f.pass << "` ";
+  if (!f.pass.empty()) line << "pass " << markdownCode(f.pass) << " ";
   line << f.metric->name;
   if (f.metric->check == CheckRule::Speed) line << " (" << timingName(f.record->record.timing) << " time × sm)";
   line << " " << formatValue(*f.metric, f.baseline) << " → " << formatValue(*f.metric, f.current);
@@ -67,11 +69,11 @@ std::string findingLine(const Finding& f) {
 // Why two matched records have no speed ratio to compare; empty when both have one.
 std::string whyNoRatio(const CheckRecord& b, const CheckRecord& c) {
   for (const CheckRecord* r : {&b, &c}) {
-    if (frameTimeMs(r->record) == 0) return "its frame time is 0 in " + r->file + " (not a measurement).";
-    if (r->smTimeZero) return "`sm`'s frame time is 0 in " + r->file + " (not a measurement).";
+    if (frameTimeMs(r->record) == 0) return "its frame time is 0 in " + markdownText(r->file) + " (not a measurement).";
+    if (r->smTimeZero) return "`sm`'s frame time is 0 in " + markdownText(r->file) + " (not a measurement).";
   }
   for (const CheckRecord* r : {&b, &c})
-    if (!r->smRatio) return "no `sm` record in the same run (" + r->file + ").";
+    if (!r->smRatio) return "no `sm` record in the same run (" + markdownText(r->file) + ").";
   return "";
 }
 
@@ -82,8 +84,8 @@ void addNote(CheckReport& report, const std::string& note) {
 // Why two matched records' work counts are not compared, as a note; empty when they are.
 std::string whyNoWork(const CheckRecord& b, const CheckRecord& c) {
   if (b.record.backend != c.record.backend)
-    return "work not compared: the backends differ (baseline `" + b.record.backend + "`, current `" +
-           c.record.backend + "`); another rasterizer counts other work.";
+    return "work not compared: the backends differ (baseline " + markdownCode(b.record.backend) + ", current " +
+           markdownCode(c.record.backend) + "); another rasterizer counts other work.";
   // One note per reason, not per record: a baseline from before the counters lacks them all.
   for (const CheckRecord* r : {&b, &c})
     if (!r->record.work)
@@ -197,6 +199,15 @@ CheckReport compareRecords(const std::vector<CheckRecord>& baseline, const std::
       continue;
     }
     const CheckRecord& c = *it->second;
+    // The paths run different passes with different memory (docs/paths.md): every pass of
+    // one would read as new or gone, so runs of two paths are refused, as merge refuses them.
+    if (b.record.path && c.record.path && *b.record.path != *c.record.path)
+      throw InputError(c.file + ": " + label(c) + ": made on the " + std::string(pathName(*c.record.path)) +
+                       " path, the baseline's (" + b.file + ") on the " + std::string(pathName(*b.record.path)) +
+                       " path; check compares runs of one path (--path)");
+    if (b.record.path.has_value() != c.record.path.has_value())
+      addNote(report, "records made before the path was recorded (no `path` key) are compared as if on the other "
+                      "side's path; refresh the baseline with scripts/baselines.sh.");
     matched[c.key()] = true;
     ++report.compared;
 
@@ -215,9 +226,9 @@ CheckReport compareRecords(const std::vector<CheckRecord>& baseline, const std::
                           "accuracy change can be the compiler's.");
     if (br.technique != "sm") {  // sm is the speed reference: its ratio is 1 by definition
       if (br.backend != cr.backend) {
-        addNote(report, "speed not compared: the backends differ (baseline `" + br.backend + "`, current `" +
-                            cr.backend +
-                            "`); frame times from different devices are not comparable. Accuracy and memory were "
+        addNote(report, "speed not compared: the backends differ (baseline " + markdownCode(br.backend) + ", current " +
+                            markdownCode(cr.backend) +
+                            "); frame times from different devices are not comparable. Accuracy and memory were "
                             "still checked.");
       } else if (br.timing != cr.timing) {
         addNote(report, "speed not compared where the timing source differs (baseline " +

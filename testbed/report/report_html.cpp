@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 
 #include "testbed/harness/metric_table.h"
 
@@ -17,12 +18,27 @@ namespace {
 
 using nlohmann::json;
 
-// Text inside <script> or <title>: "</" would end the element early; "<\/" reads the same
-// in JSON and in JavaScript strings.
-std::string scriptSafe(std::string text) {
-  for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3))
-    text.replace(at, 2, "<\\/");
-  return text;
+// JSON set inside a <script> element. '<', '>' and '&' only ever occur inside JSON strings,
+// where "\u003c" reads back the same: with none of them left, no "</script", "<!--" or
+// "<script" can end the element or switch the HTML parser into its script-data escape
+// states (HTML Living Standard, 13.2.5.4 "Script data state" onwards). U+2028/U+2029 are
+// line terminators to older JavaScript parsers. scripts/page_data.py does the same.
+std::string scriptSafe(const std::string& json) {
+  static constexpr std::pair<std::string_view, std::string_view> kEscapes[] = {
+      {"<", "\\u003c"}, {">", "\\u003e"}, {"&", "\\u0026"}, {"\xe2\x80\xa8", "\\u2028"}, {"\xe2\x80\xa9", "\\u2029"}};
+  std::string out;
+  out.reserve(json.size());
+  for (std::size_t i = 0; i < json.size();) {
+    const auto* escape = std::find_if(std::begin(kEscapes), std::end(kEscapes),
+                                      [&](const auto& e) { return json.compare(i, e.first.size(), e.first) == 0; });
+    if (escape == std::end(kEscapes)) {
+      out += json[i++];
+    } else {
+      out += escape->second;
+      i += escape->first.size();
+    }
+  }
+  return out;
 }
 
 std::string htmlEscape(const std::string& text) {

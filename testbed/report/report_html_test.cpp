@@ -53,6 +53,33 @@ TEST(ReportHtml, DocumentKeepsScriptTextInsideItsElement) {
   EXPECT_EQ(page.find("http"), std::string::npos);  // nothing fetched from a network
 }
 
+// No text can end the data's <script> or re-open one ("<!--<script>" would make the parser
+// swallow the report script after it): '<', '>', '&', U+2028 and U+2029 are escaped, and
+// the data still reads back as it was given.
+TEST(ReportHtml, PageDataHoldsNoMarkupAndReadsBack) {
+  const std::string hostile = "<!--<script> a </script> & b \xe2\x80\xa8 \xe2\x80\xa9 -->";
+  const std::string page = htmlDocument(hostile, {hostile}, nlohmann::json::array({htmlLinks(hostile, {{hostile, hostile}})}));
+  const std::string open = "id=\"page-data\">";
+  const std::size_t start = page.find(open) + open.size();
+  const std::string data = page.substr(start, page.find("</script>", start) - start);
+  for (const std::string forbidden : {"<", ">", "&", "\xe2\x80\xa8", "\xe2\x80\xa9"})
+    EXPECT_EQ(data.find(forbidden), std::string::npos) << forbidden;
+  const nlohmann::json parsed = nlohmann::json::parse(data);
+  EXPECT_EQ(parsed["title"], hostile);
+  EXPECT_EQ(parsed["notes"][0], hostile);
+  EXPECT_EQ(parsed["sections"][0]["items"][0]["text"], hostile);
+  // The report script and style, embedded as they are, hold none either: exactly the two
+  // script elements open and close.
+  auto count = [&](const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = page.find(what); at != std::string::npos; at = page.find(what, at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count("<script"), 2u);
+  EXPECT_EQ(count("</script"), 2u);
+  EXPECT_EQ(count("<!--"), 0u);
+}
+
 // A sweep entry shows the paper's figures only in columns that have any: a study of one's
 // own shows ours alone, never "(paper –)"; a spec's differences show beside the ratio.
 TEST(ReportHtml, SweepEntriesShowThePapersFiguresOnlyWhereThereAreSome) {

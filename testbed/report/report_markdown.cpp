@@ -3,6 +3,7 @@
 #include <utility>
 #include <vector>
 
+#include "testbed/core/markdown_text.h"
 #include "testbed/harness/metric_table.h"
 #include "testbed/report/comparison.h"
 
@@ -20,10 +21,10 @@ void passRow(std::ostringstream& md, const Record& r) {
   std::vector<std::pair<std::string, double>> passes(r.timed().passesMs.begin(), r.timed().passesMs.end());
   std::stable_sort(passes.begin(), passes.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
   const double total = r.timed().totalMs;
-  md << "| `" << r.technique << "` | " << formatFixed(total, 2) << " |";
+  md << "| " << markdownCode(r.technique) << " | " << formatFixed(total, 2) << " |";
   const char* separator = " ";
   for (const auto& [name, ms] : passes) {
-    md << separator << name << " " << formatFixed(ms, 2);
+    md << separator << markdownText(name) << " " << formatFixed(ms, 2);
     if (total > 0) md << " (" << formatFixed(100.0 * ms / total, 0) << " %)";
     separator = " · ";
   }
@@ -34,7 +35,7 @@ void passRow(std::ostringstream& md, const Record& r) {
 void workRows(std::ostringstream& md, const Record& r) {
   if (!r.work) return;
   for (const auto& [name, counts] : r.work->passes) {
-    md << "| `" << r.technique << "` | " << name << " |";
+    md << "| " << markdownCode(r.technique) << " | " << markdownText(name) << " |";
     for (const std::uint64_t count : counts) md << " " << count << " |";
     md << "\n";
   }
@@ -43,7 +44,7 @@ void workRows(std::ostringstream& md, const Record& r) {
 void workSection(std::ostringstream& md, const Comparison& c) {
   md << "\n## Work per pass\n\n";
   if (!baselineRecord(c).work) {
-    md << "Not counted: the GL (" << baselineRecord(c).backend
+    md << "Not counted: the GL (" << markdownText(baselineRecord(c).backend)
        << ") offers no pipeline statistics (ARB_pipeline_statistics_query).\n";
     return;
   }
@@ -67,9 +68,9 @@ const Record& baselineRecord(const Comparison& comparison) { return comparison.e
 std::string reportMarkdown(const Comparison& c) {
   const Record& first = baselineRecord(c);
   std::ostringstream md;
-  md << "# " << c.scene << "\n\n"
+  md << "# " << markdownText(c.scene) << "\n\n"
      << "Screen " << first.width << "×" << first.height << ", shadow map " << first.shadowMap << "², "
-     << first.depthFormat << "-bit depth, " << first.backend << ", " << first.repeat
+     << first.depthFormat << "-bit depth, " << markdownText(first.backend) << ", " << first.repeat
      << " timed frame(s), medians. `× sm` is the technique's time (its passes, shadow map included) over `sm`'s in this run, "
      << (first.timing == TimingSource::Wall
              ? "by wall time between glFinish calls: this is a software rasterizer, whose timer queries miss the "
@@ -86,13 +87,13 @@ std::string reportMarkdown(const Comparison& c) {
     }
   md << header << "\n" << rule << "\n";
   for (const auto& entry : c.entries) {
-    md << "| `" << entry.record.technique << "` |";
+    md << "| " << markdownCode(entry.record.technique) << " |";
     for (const Metric& m : metricTable())
       if (m.shownIn(kReportColumn)) md << " " << formatFixed(m.value(entry.record, &first), m.digits) << " |";
     md << "\n";
   }
   const Record& gt = c.groundTruth;
-  md << "\nGround truth (`" << gt.technique << "`): " << fixedMetric("technique_ms", gt, &first) << " ms, "
+  md << "\nGround truth (" << markdownCode(gt.technique) << "): " << fixedMetric("technique_ms", gt, &first) << " ms, "
      << fixedMetric("x_sm", gt, &first) << "× sm; the whole frame including the CPU silhouette "
      << "extraction and upload took " << fixedMetric("cpu_ms", gt, &first) << " ms.\n\n"
      << "## Where the time goes\n\n"

@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "testbed/core/markdown_text.h"
 #include "testbed/harness/metric_table.h"
 
 namespace testbed {
@@ -20,7 +21,7 @@ std::string sequenceMarkdown(const std::string& scene, const std::vector<nlohman
   for (const Metric& m : metricTable())
     if (!m.path.empty() && m.shownIn(kReportColumn)) columns.push_back(&m);
   std::ostringstream out;
-  out << "# " << scene << ": sequence\n\n";
+  out << "# " << markdownText(scene) << ": sequence\n\n";
   if (!records.empty()) {
     const auto& f = records.front().at("frames");
     out << "Frames " << f.at("first") << ".." << f.at("last") << " step " << f.at("step") << " (" << f.at("count")
@@ -37,7 +38,7 @@ std::string sequenceMarkdown(const std::string& scene, const std::vector<nlohman
   for (std::size_t i = 0; i < columns.size(); ++i) out << "---:|";
   out << "\n";
   for (const auto& r : records) {
-    out << "| " << r.at("technique").get<std::string>() << " | "
+    out << "| " << markdownText(r.at("technique").get<std::string>()) << " | "
         << formatFixed(at(r, "/temporal/flicker"), 5) << " | " << formatFixed(at(r, "/temporal/crawl_pct"), 4)
         << " | " << formatFixed(at(r, "/temporal/crawl_missed_pct"), 4) << " | "
         << formatFixed(at(r, "/temporal/stable_pairs"), 0) << " | " << formatFixed(at(r, "/temporal/moved_pixels"), 0)

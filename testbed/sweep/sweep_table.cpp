@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "testbed/core/error.h"
-#include "testbed/report/markdown_text.h"
+#include "testbed/core/markdown_text.h"
 
 namespace testbed {
 namespace {
@@ -204,8 +204,8 @@ std::vector<FigureColumn> figureColumns(const SweepTable& table) {
 std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& header) {
   std::ostringstream md;
   const bool anyPaper = anyPaperColumn(table);
-  md << "# " << (table.title.empty() ? table.name : table.title) << "\n\n";
-  if (!table.citation.empty()) md << "Paper: " << table.citation << ". ";
+  md << "# " << markdownText(table.title.empty() ? table.name : table.title) << "\n\n";
+  if (!table.citation.empty()) md << "Paper: " << markdownText(table.citation) << ". ";
   else if (!anyPaper) md << "A study of one's own (no paper's figures). ";
   md << "Measure: `" << table.measure << "`" << (table.unit.empty() ? "" : " (" + table.unit + ")");
   if (table.unit == "ms" || table.unit == "fps")
@@ -217,7 +217,7 @@ std::string sweepTableMarkdown(const SweepTable& table, const SweepHeader& heade
        << (anyPaper ? ", ours against ours and the paper's against the paper's." : ".");
   if (table.hasDifferences) md << " `−SM`: the difference to shadow mapping in the same column, in " << table.unit << ".";
   md << "\n\n";
-  for (const auto& [name, value] : header) md << "- " << name << ": " << value << "\n";
+  for (const auto& [name, value] : header) md << "- " << name << ": " << markdownText(value) << "\n";
   if (!header.empty()) md << "\n";
   if (!table.note.empty()) md << table.note << "\n\n";
 

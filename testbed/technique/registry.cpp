@@ -7,6 +7,7 @@
 #include <set>
 
 #include "testbed/core/error.h"
+#include "testbed/core/markdown_text.h"
 #include "testbed/technique/parameters.h"
 
 namespace testbed {
@@ -129,10 +130,10 @@ std::string techniqueTableMarkdown() {
   for (const auto& t : registeredTechniques()) {
     std::string parameters;
     for (const auto& spec : t.info->parameters)
-      parameters += (parameters.empty() ? "" : ", ") + ("`" + spec.name + "=" + formatValue(spec.defaultValue) + "`");
-    table += "| `" + t.info->id + "` | " + t.info->family + " | " +
+      parameters += (parameters.empty() ? "" : ", ") + markdownCode(spec.name + "=" + formatValue(spec.defaultValue));
+    table += "| `" + t.info->id + "` | " + markdownText(t.info->family) + " | " +
              (t.info->output == OutputKind::Hard ? "hard" : "filtered") + " | " + parameters + " | " +
-             t.info->citation + " |\n";
+             markdownText(t.info->citation) + " |\n";
   }
   return table;
 }

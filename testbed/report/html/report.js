@@ -1,5 +1,5 @@
 // index.html of a run (testbed/report/report_html.h): renders the page's sections from the
-// JSON in <script id="page-data">. Embedded into every page at build time; no library, no
+// JSON in the page-data script element. Embedded into every page at build time; no library, no
 // network. Images the inspector reads are data: URIs, which keep a canvas readable under
 // file:// (an image from another file would taint it).
 'use strict';
