@@ -31,9 +31,15 @@ std::uint64_t parseInteger(const std::string& option, const std::string& text, s
 // progress line per render.
 GroundTruthCounts renderCheck(const Scene& scene, const RenderSettings& settings, int& rendered) {
   beginProgressLine("[check " + std::to_string(++rendered) + "] " + oneLine(scene.name));
-  FrameRunner runner(scene, settings);
-  const auto& truth = shadowVolumeGroundTruth();
-  const ImageF visibility = runner.run(truth, resolveParameters("groundtruth", truth.info->parameters, {})).visibility;
+  ImageF visibility;
+  try {
+    FrameRunner runner(scene, settings);
+    const auto& truth = shadowVolumeGroundTruth();
+    visibility = runner.run(truth, resolveParameters("groundtruth", truth.info->parameters, {})).visibility;
+  } catch (const InputError&) {  // the generator draws again and records why
+    endProgressLine(": refused\n");
+    throw;
+  }
   const ErrorMetrics m = computeErrorMetrics(visibility, visibility);
   endProgressLine(": " + std::to_string(m.gtBoundaryPixels) + " boundary px, " + std::to_string(m.gtLitReceivers) +
                   " lit, " + std::to_string(m.gtShadowReceivers) + " shadowed\n");

@@ -201,13 +201,13 @@ std::vector<MeshInfo> usableMeshes(const std::vector<std::pair<fs::path, fs::pat
       skip("flat (thinner than 2 % of its size): it would lie in the receiver plane");
     } else {
       Json key = {info.triangles, r4(extent.x / largest), r4(extent.y / largest), r4(extent.z / largest)};
+      if (const auto problem = placementProblem(info.reference, file)) {
+        skip("the scene parser refuses it as a scene object: " + *problem);
+        continue;
+      }
       const auto [it, fresh] = seen.emplace(key.dump(), named);
       if (!fresh) {
         skip("the same mesh as " + it->second + " (triangle count and proportions)");
-        continue;
-      }
-      if (const auto problem = placementProblem(info.reference, file)) {
-        skip("the scene parser refuses it as a scene object: " + *problem);
         continue;
       }
       meshes.push_back(std::move(info));
