@@ -24,9 +24,17 @@ void writeMeshes(const test::TempDir& dir) {
   test::writeFile(dir / "meshes/tetra.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
   test::writeFile(dir / "meshes/invalid/lumpy-again.off", test::lumpySphereOff(2.0));
   test::writeFile(dir / "meshes/tiny.off", test::lumpySphereOff(1e-40));
-  // Flat, with enough triangles (a square fanned around its centre) that flatness is its fault.
-  test::writeFile(dir / "meshes/sub/sheet.off",
-                  "OFF\n5 4 0\n0 0 0\n1 0 0\n1 0 1\n0 0 1\n0.5 0 0.5\n3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n");
+  // Flat, with enough triangles (a 15 × 15 grid, 392) that flatness is its fault.
+  std::string sheet = "OFF\n225 392 0\n";
+  for (int z = 0; z < 15; ++z)
+    for (int x = 0; x < 15; ++x) sheet += std::to_string(x) + " 0 " + std::to_string(z) + "\n";
+  for (int z = 0; z < 14; ++z)
+    for (int x = 0; x < 14; ++x) {
+      const int i = 15 * z + x;
+      sheet += "3 " + std::to_string(i) + " " + std::to_string(i + 15) + " " + std::to_string(i + 1) + "\n";
+      sheet += "3 " + std::to_string(i + 1) + " " + std::to_string(i + 15) + " " + std::to_string(i + 16) + "\n";
+    }
+  test::writeFile(dir / "meshes/sub/sheet.off", sheet);
   test::writeFile(dir / "meshes/broken.obj", "this is not a mesh\n");
 }
 
