@@ -75,10 +75,12 @@ TEST(CorpusCommand, BadOptionsAreRefusedAndNothingIsWritten) {
       {{"--seed", "1", "--count", "2", "--out", out, "--size", "-640x-360"}, "--size"},
       {{"--seed", "1", "--count", "2", "--out", out, "--size", "640x-360"}, "--size"},
       {{"--seed", "1", "--count", "2", "--out", out, "--size", "1280x100000"}, "--size"},
+      {{"--seed", "1", "--count", "2", "--out", out, "--size", "8192x1"}, "--size"},
+      {{"--seed", "1", "--count", "2", "--out", out, "--size", "100x401"}, "--size"},
       {{"--seed", "1", "--count", "2", "--out", out, "--shadow-map", "0"}, "--shadow-map"},
       {{"--seed", "1", "--count", "2", "--out", out, "--shadow-map", "-1024"}, "--shadow-map"},
       {{"--seed", "1", "--count", "2", "--out", out, "--shadow-map", "16"}, "--shadow-map"},
-      {{"--seed", "1", "--count", "2", "--out", out, "--size", "1280x8192"}, "--shadow-map"},
+      {{"--seed", "1", "--count", "2", "--out", out, "--size", "2048x2048"}, "--shadow-map"},
       {{"--seed", "1", "--count", "2", "--out", out, "--backend", "nosuch"}, "nosuch"},
   };
   for (const auto& [args, option] : cases) {

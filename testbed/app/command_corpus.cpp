@@ -1,6 +1,8 @@
 // `testbed corpus`: N generated scene files and manifest.json (docs/corpus.md), written
 // together through a staging folder so that a failure leaves nothing half-written.
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <iostream>
 
 #include "groundtruth/shadow_volumes.h"
@@ -37,12 +39,17 @@ GroundTruthCounts renderCheck(const Scene& scene, const RenderSettings& settings
     const auto& truth = shadowVolumeGroundTruth();
     visibility = runner.run(truth, resolveParameters("groundtruth", truth.info->parameters, {})).visibility;
   } catch (const InputError&) {  // the generator draws again and records why
-    endProgressLine(": refused\n");
+    endProgressLine(": refused");
     throw;
+  }
+  // The metrics take no image without receivers; such a view is refused by its counts.
+  if (std::all_of(visibility.pixels.begin(), visibility.pixels.end(), [](float v) { return std::isnan(v); })) {
+    endProgressLine(": no receiver in view");
+    return {};
   }
   const ErrorMetrics m = computeErrorMetrics(visibility, visibility);
   endProgressLine(": " + std::to_string(m.gtBoundaryPixels) + " boundary px, " + std::to_string(m.gtLitReceivers) +
-                  " lit, " + std::to_string(m.gtShadowReceivers) + " shadowed\n");
+                  " lit, " + std::to_string(m.gtShadowReceivers) + " shadowed");
   return {m.receivers, m.gtBoundaryPixels, m.gtLitReceivers, m.gtShadowReceivers};
 }
 

@@ -503,10 +503,14 @@ glm::ivec2 corpusCheckSize(glm::ivec2 image) {
 }
 
 void checkCorpusSizes(glm::ivec2 image, int shadowMap) {
+  const std::string size = std::to_string(image.x) + "x" + std::to_string(image.y);
+  const double aspect = double(image.x) / image.y;
+  if (!(aspect <= kCorpusMaxAspect && aspect >= 1 / kCorpusMaxAspect))
+    throw InputError("--size: " + size + " is wider or taller than " + std::to_string(int(kCorpusMaxAspect)) +
+                     ":1, beyond the screens the generated cameras frame a scene for");
   const double rows = double(image.y) / shadowMap;
   if (rows <= kCorpusMaxRowsPerTexel) return;
-  throw InputError("--shadow-map: " + std::to_string(shadowMap) + " is too small for --size " + std::to_string(image.x) +
-                   "x" + std::to_string(image.y) + ": close-ups where a texel covers 4 pixels would stand beyond the "
+  throw InputError("--shadow-map: " + std::to_string(shadowMap) + " is too small for --size " + size + ": close-ups where a texel covers 4 pixels would stand beyond the "
                    "camera's far plane (" + Json(kCameraFar).dump() + "); give at least " +
                    std::to_string(int(std::ceil(image.y / kCorpusMaxRowsPerTexel))) + " or a smaller height");
 }

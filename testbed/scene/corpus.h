@@ -56,9 +56,14 @@ struct CorpusOptions {
 // camera's far plane (600) with room for rarer draws.
 inline constexpr double kCorpusMaxRowsPerTexel = 1.5;
 
-// Throws InputError naming --size or --shadow-map where the close-ups the generator aims
-// for (a texel over at least 4 pixels) would stand beyond the camera's far plane: the
-// image height over the map size above kCorpusMaxRowsPerTexel.
+// The widest aspect either way: the cameras frame a scene for ordinary screens, and the
+// check render keeps the aspect at a longer side of kCorpusCheckSide.
+inline constexpr double kCorpusMaxAspect = 4.0;
+
+// Throws InputError naming --size for an aspect beyond kCorpusMaxAspect either way, or
+// --shadow-map where the close-ups the generator aims for (a texel over at least 4 pixels)
+// would stand beyond the camera's far plane: the image height over the map size above
+// kCorpusMaxRowsPerTexel.
 void checkCorpusSizes(glm::ivec2 image, int shadowMap);
 
 // Where the meshes come from by default: the asset folder setup installs and Debian's
