@@ -95,7 +95,7 @@ std::string sanitized(const std::string& text) {
 }
 
 // A scene file is JSON, whose strings are UTF-8: a mesh path that is not cannot be named.
-bool isUtf8(const std::string& text) {
+bool isUtf8Text(const std::string& text) {
   try {
     (void)Json(text).dump();
     return true;
@@ -105,7 +105,7 @@ bool isUtf8(const std::string& text) {
 }
 
 // `text` with the bytes that are not UTF-8 as U+FFFD, for the manifest's names.
-std::string readable(const std::string& text) {
+std::string manifestText(const std::string& text) {
   return Json::parse(Json(text).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)).get<std::string>();
 }
 
@@ -157,8 +157,10 @@ std::vector<MeshInfo> usableMeshes(const std::vector<std::pair<fs::path, fs::pat
   for (const auto& [file, folder] : candidates) {
     const std::string named = manifestName(file, folder, assets);
     // A name that is not UTF-8 is kept readable in the manifest, its odd bytes as U+FFFD.
-    auto skip = [&](const std::string& why) { skipped.push_back({{"mesh", readable(named)}, {"why", readable(why)}}); };
-    if (!isUtf8(fs::absolute(file).generic_string())) {
+    auto skip = [&](const std::string& why) {
+      skipped.push_back({{"mesh", manifestText(named)}, {"why", manifestText(why)}});
+    };
+    if (!isUtf8Text(fs::absolute(file).generic_string())) {
       skip("its path is not UTF-8, which a scene file (JSON) cannot name");
       continue;
     }
@@ -464,7 +466,7 @@ SceneSample sampleScene(const CorpusOptions& options, std::size_t index, int att
   return sample;
 }
 
-std::string percent(double share) {
+std::string shareText(double share) {
   char text[32];
   std::snprintf(text, sizeof text, "%g %%", share * 100);
   return text;
@@ -473,7 +475,7 @@ std::string percent(double share) {
 // Why a drawn scene cannot be written (nullopt: it can), as a user's copy of it would
 // meet the testbed: read by the scene parser from its text, then rendered; `counts` gets
 // its ground truth's figures.
-std::optional<std::string> refusal(const CorpusOptions& options, const std::string& file, const std::string& text,
+std::optional<std::string> draftRefusal(const CorpusOptions& options, const std::string& file, const std::string& text,
                                    GroundTruthCounts& counts) {
   try {
     const Scene scene = parseScene(nlohmann::json::parse(text), file);
@@ -490,7 +492,7 @@ std::optional<std::string> refusal(const CorpusOptions& options, const std::stri
   if (counts.litReceivers < least || counts.shadowReceivers < least)
     return "the ground truth has " + std::to_string(counts.litReceivers) + " lit and " +
            std::to_string(counts.shadowReceivers) + " shadowed of " + std::to_string(counts.receivers) +
-           " receivers" + at + ": each needs " + percent(kCorpusMinStateShare) + " of them";
+           " receivers" + at + ": each needs " + shareText(kCorpusMinStateShare) + " of them";
   return std::nullopt;
 }
 
@@ -561,7 +563,7 @@ Corpus generateCorpus(const CorpusOptions& options) {
                    {"scenes", Json::array()}};
   std::error_code ec;
   const fs::path assets = fs::weakly_canonical(assetDirectory(), ec);
-  for (const auto& f : options.meshFolders) manifest["mesh_folders"].push_back(readable(manifestName(f, f, assets)));
+  for (const auto& f : options.meshFolders) manifest["mesh_folders"].push_back(manifestText(manifestName(f, f, assets)));
   for (const auto& m : meshes) manifest["meshes"].push_back({{"mesh", m.named}, {"triangles", m.triangles}});
   for (int i = 0; i < options.count; ++i) {
     Json rejected = Json::array();
@@ -572,9 +574,9 @@ Corpus generateCorpus(const CorpusOptions& options) {
       SceneSample sample = sampleScene(options, std::size_t(i), attempt, meshes);
       const std::string file = sample.manifest["file"].get<std::string>(), text = sample.scene.dump(2) + "\n";
       GroundTruthCounts counts;
-      const std::optional<std::string> why = refusal(options, file, text, counts);
+      const std::optional<std::string> why = draftRefusal(options, file, text, counts);
       if (why) {
-        rejected.push_back({{"draw", attempt}, {"why", readable(*why)}});
+        rejected.push_back({{"draw", attempt}, {"why", manifestText(*why)}});
         continue;
       }
       sample.manifest["draw"] = attempt;
