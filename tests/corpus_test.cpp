@@ -1,6 +1,7 @@
-// `testbed corpus` end to end: two runs are byte-identical, bad options are refused with
-// one line naming the option and nothing written, and the generated scenes (from the
-// installed assets and assimp-testmodels) load and mostly show a shadow boundary.
+// `testbed corpus` end to end: two runs are byte-identical, bad options and hostile meshes
+// are refused with one line naming the option and nothing written, and the generated
+// scenes (from the installed assets and assimp-testmodels) load, render, and show what
+// the manifest says their check render showed.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include "testbed/scene/scene.h"
 #include "tests/cli_helpers.h"
 #include "tests/gl_fixture.h"
+#include "tests/mesh_fixtures.h"
 
 namespace testbed {
 namespace {
@@ -67,6 +69,19 @@ TEST(CorpusCommand, BadOptionsAreRefusedAndNothingIsWritten) {
       {{"--seed", "1", "--count", "2", "--out", (dir / "a-file").string()}, "--out"},
       {{"--seed", "1", "--count", "2", "--out", out, "--meshes", (dir / "none").string()}, "--meshes"},
       {{"--seed", "1", "--count", "2", "--out", out, "--meshes", dir.path().string()}, "--meshes"},
+      // Sizes the testbed would not render at, and a map so coarse for the image that a
+      // close-up would stand beyond the camera's far plane.
+      {{"--seed", "1", "--count", "2", "--out", out, "--size", "0x0"}, "--size"},
+      {{"--seed", "1", "--count", "2", "--out", out, "--size", "-640x-360"}, "--size"},
+      {{"--seed", "1", "--count", "2", "--out", out, "--size", "640x-360"}, "--size"},
+      {{"--seed", "1", "--count", "2", "--out", out, "--size", "1280x100000"}, "--size"},
+      {{"--seed", "1", "--count", "2", "--out", out, "--size", "8192x1"}, "--size"},
+      {{"--seed", "1", "--count", "2", "--out", out, "--size", "100x401"}, "--size"},
+      {{"--seed", "1", "--count", "2", "--out", out, "--shadow-map", "0"}, "--shadow-map"},
+      {{"--seed", "1", "--count", "2", "--out", out, "--shadow-map", "-1024"}, "--shadow-map"},
+      {{"--seed", "1", "--count", "2", "--out", out, "--shadow-map", "16"}, "--shadow-map"},
+      {{"--seed", "1", "--count", "2", "--out", out, "--size", "2048x2048"}, "--shadow-map"},
+      {{"--seed", "1", "--count", "2", "--out", out, "--backend", "nosuch"}, "nosuch"},
   };
   for (const auto& [args, option] : cases) {
     std::vector<std::string> words = {"corpus"};
@@ -78,27 +93,78 @@ TEST(CorpusCommand, BadOptionsAreRefusedAndNothingIsWritten) {
   }
 }
 
-// Every scene of a 12-scene corpus loads and renders its ground truth; most have a shadow
-// boundary in view (a low sun behind a wall can leave a close-up wholly in shadow).
-TEST(CorpusCommand, GeneratedScenesLoadAndMostShowAShadowBoundary) {
+// Meshes a folder may hold that no scene file can use: coordinates of 1e-40 (fitted to a
+// scene's size they overflow float), a name that is not UTF-8 (JSON cannot hold it). Alone
+// in --meshes they leave no usable mesh: one line naming --meshes, nothing written.
+// Beside a good mesh they are skipped with their reason, and a 250-byte name makes a scene
+// file name short enough to write.
+TEST(CorpusCommand, HostileMeshesAreSkippedWithTheirReason) {
+  test::TempDir dir;
+  const std::string longName = std::string(246, 'm') + ".off", notUtf8 = "bad-\xff\xfe.off";
+  test::writeFile(dir / "tiny/tiny.off", test::lumpySphereOff(1e-40));
+  test::writeFile(dir / "named" / notUtf8, test::lumpySphereOff());
+  for (const auto& [folder, line] : {std::pair{"tiny", "--meshes: no usable"}, {"named", "--meshes: no usable"}}) {
+    const auto run = test::runTestbed({"corpus", "--seed", "1", "--count", "2", "--out", (dir / "out").string(),
+                                       "--meshes", (dir / folder).string()});
+    EXPECT_TRUE(test::rejectedWithOneLine(run)) << run.describe();
+    EXPECT_NE(run.err.find(line), std::string::npos) << run.describe();
+    EXPECT_FALSE(std::filesystem::exists(dir / "out")) << run.describe();
+  }
+  const auto mixed = dir / "mixed";
+  test::writeFile(mixed / "tiny.off", test::lumpySphereOff(1e-40));
+  test::writeFile(mixed / notUtf8, test::lumpySphereOff());
+  test::writeFile(mixed / longName, test::lumpySphereOff());
+  const auto run = test::runTestbed(
+      {"corpus", "--seed", "3", "--count", "2", "--out", (dir / "out").string(), "--meshes", mixed.string()});
+  ASSERT_EQ(run.exitCode, 0) << run.describe();
+  const auto manifest = nlohmann::json::parse(test::readFile(dir / "out" / "manifest.json"));
+  ASSERT_EQ(manifest["skipped"].size(), 2u) << manifest["skipped"].dump(2);
+  EXPECT_EQ(manifest["skipped"][0]["mesh"], (mixed / "bad-\uFFFD\uFFFD.off").string());
+  EXPECT_NE(manifest["skipped"][0]["why"].get<std::string>().find("not UTF-8"), std::string::npos);
+  EXPECT_NE(manifest["skipped"][1]["why"].get<std::string>().find("not finite"), std::string::npos);
+  test::sharedContext();
+  for (const auto& scene : manifest["scenes"]) {
+    const std::string file = scene["file"];
+    EXPECT_LT(file.size(), 64u) << file;
+    EXPECT_EQ(loadScene(dir / "out" / file).objects.size() >= 2, true) << file;
+  }
+}
+
+// Every scene of a 12-scene corpus loads and renders its ground truth; at the check size
+// it shows what the manifest recorded (the admission: a boundary of at least 40 pixels,
+// lit and shadowed receivers), and at twice that size it still has a boundary.
+TEST(CorpusCommand, GeneratedScenesShowTheShadowBoundaryTheManifestRecords) {
   test::TempDir dir;
   const auto run = test::runTestbed({"corpus", "--seed", "2026", "--count", "12", "--out", dir.path().string()});
   ASSERT_EQ(run.exitCode, 0) << run.describe();
-  test::sharedContext();
-  int withBoundary = 0, total = 0;
-  for (const auto& name : test::filesIn(dir.path())) {
-    if (name == "manifest.json") continue;
-    const Scene scene = loadScene(dir / name);
-    FrameRunner runner(scene, test::renderSettings({320, 180}, 1024));
-    const ImageF truth = test::groundTruthVisibility(runner);
-    const ErrorMetrics self = computeErrorMetrics(truth, truth);
-    std::cout << "[ corpus   ] " << name << ": " << self.receivers << " receivers, " << self.gtBoundaryPixels
-              << " boundary pixels\n";
-    ++total;
-    withBoundary += self.gtBoundaryPixels > 0;
+  const auto manifest = nlohmann::json::parse(test::readFile(dir / "manifest.json"));
+  ASSERT_EQ(manifest["scenes"].size(), 12u);
+  for (const auto& mesh : manifest["meshes"]) {
+    EXPECT_GE(mesh["triangles"].get<int>(), 200) << mesh.dump();
+    EXPECT_EQ(mesh["mesh"].get<std::string>().find("/invalid/"), std::string::npos) << mesh.dump();
   }
-  EXPECT_EQ(total, 12);
-  EXPECT_GE(withBoundary, 10) << withBoundary << " of " << total << " scenes have a shadow boundary";
+  test::sharedContext();
+  for (const auto& entry : manifest["scenes"]) {
+    SCOPED_TRACE(entry.dump());
+    const Scene scene = loadScene(dir / entry["file"].get<std::string>());
+    for (const glm::ivec2 size : {glm::ivec2(160, 90), glm::ivec2(320, 180)}) {
+      FrameRunner runner(scene, test::renderSettings(size, 1024));
+      const ImageF truth = test::groundTruthVisibility(runner);
+      const ErrorMetrics self = computeErrorMetrics(truth, truth);
+      std::cout << "[ corpus   ] " << scene.name << " at " << size.x << "x" << size.y << ": " << self.receivers
+                << " receivers, " << self.gtBoundaryPixels << " boundary pixels\n";
+      if (size.x == 160) {
+        EXPECT_EQ(self.gtBoundaryPixels, entry["check"]["boundary_px"].get<int>());
+        EXPECT_EQ(self.gtLitReceivers, entry["check"]["lit"].get<int>());
+        EXPECT_EQ(self.gtShadowReceivers, entry["check"]["shadowed"].get<int>());
+        EXPECT_GE(self.gtBoundaryPixels, 40);
+        EXPECT_GE(self.gtLitReceivers, 0.02 * self.receivers);
+        EXPECT_GE(self.gtShadowReceivers, 0.02 * self.receivers);
+      } else {
+        EXPECT_GT(self.gtBoundaryPixels, 40);
+      }
+    }
+  }
 }
 
 }  // namespace

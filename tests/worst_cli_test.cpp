@@ -73,6 +73,33 @@ TEST(CliWorst, BadInputIsOneLineAndWritesNothing) {
   }
 }
 
+// A camera whose far plane is just beyond its target: an orbit out to 1.5 times its
+// distance would put the target beyond far, which the scene parser refuses (the search
+// used to render 16 such configurations and then fail writing them). The search keeps
+// every camera it moves within far, so all 16 configurations are written.
+TEST(CliWorst, TheOrbitStaysWithinTheFarPlane) {
+  TempDir tmp("worst-far");
+  json scene = json::parse(readFile(family()));
+  scene["camera"]["far"] = 90;  // the camera stands 83.2 from its target
+  const fs::path file = writeFile(tmp / "near-far.json", scene.dump());
+  const fs::path out = tmp / "out";
+  const RunResult run = runTestbed(
+      with({"worst", "--scene", file.string(), "--technique", "sm", "--budget", "16", "--k", "16", "--out", out.string()},
+           kSmall));
+  ASSERT_EQ(run.exitCode, 0) << run.describe();
+  EXPECT_NE(run.err.find("[16/16]"), std::string::npos) << run.err;
+  const json manifest = json::parse(readFile(out / "manifest.json"));
+  EXPECT_EQ(manifest.at("skipped"), 0);
+  ASSERT_EQ(manifest.at("cases").size(), 16u);
+  for (const auto& entry : manifest.at("cases")) {
+    const json written = json::parse(readFile(out / entry.at("file").get<std::string>()));
+    const json& camera = written.at("camera");
+    double distance = 0;
+    for (int i = 0; i < 3; ++i) distance += std::pow(camera["eye"][i].get<double>() - camera["target"][i].get<double>(), 2);
+    EXPECT_LE(std::sqrt(distance), 0.95 * 90 + 1e-3) << written.dump();
+  }
+}
+
 TEST(CliWorst, FindsThePlantedGrazingSunAndItsScenesReproduceTheFigures) {
   TempDir tmp("worst-planted");
   const fs::path out = tmp / "out";

@@ -1,11 +1,16 @@
 // `testbed corpus`: N generated scene files and manifest.json (docs/corpus.md), written
 // together through a staging folder so that a failure leaves nothing half-written.
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <iostream>
 
+#include "groundtruth/shadow_volumes.h"
 #include "testbed/app/commands.h"
 #include "testbed/core/error.h"
 #include "testbed/core/messages.h"
+#include "testbed/gl/context.h"
+#include "testbed/metrics/metrics.h"
 #include "testbed/scene/corpus.h"
 
 namespace testbed {
@@ -13,11 +18,35 @@ namespace {
 
 constexpr std::uint64_t kMaxCount = 10000;
 
+// The candidate's ground truth at the check size, as `groundtruth` renders it, with one
+// progress line per render.
+GroundTruthCounts renderCheck(const Scene& scene, const RenderSettings& settings, int& rendered) {
+  beginProgressLine("[check " + std::to_string(++rendered) + "] " + oneLine(scene.name));
+  ImageF visibility;
+  try {
+    FrameRunner runner(scene, settings);
+    const auto& truth = shadowVolumeGroundTruth();
+    visibility = runner.run(truth, resolveParameters("groundtruth", truth.info->parameters, {})).visibility;
+  } catch (const InputError&) {  // the generator draws again and records why
+    endProgressLine(": refused");
+    throw;
+  }
+  // The metrics take no image without receivers; such a view is refused by its counts.
+  if (std::all_of(visibility.pixels.begin(), visibility.pixels.end(), [](float v) { return std::isnan(v); })) {
+    endProgressLine(": no receiver in view");
+    return {};
+  }
+  const ErrorMetrics m = computeErrorMetrics(visibility, visibility);
+  endProgressLine(": " + std::to_string(m.gtBoundaryPixels) + " boundary px, " + std::to_string(m.gtLitReceivers) +
+                  " lit, " + std::to_string(m.gtShadowReceivers) + " shadowed");
+  return {m.receivers, m.gtBoundaryPixels, m.gtLitReceivers, m.gtShadowReceivers};
+}
+
 }  // namespace
 
 CommandRunner addCorpusCommand(CLI::App& app) {
   struct Options {
-    std::string seed, count, out, size = "1280x720";
+    std::string seed, count, out, size = "1280x720", backend = "osmesa";
     int shadowMap = 1024;
     std::vector<std::string> meshFolders;
   };
@@ -34,14 +63,14 @@ CommandRunner addCorpusCommand(CLI::App& app) {
   command->add_option("--size", options->size, "screen size the pixel estimates assume")->capture_default_str();
   command->add_option("--shadow-map", options->shadowMap, "shadow map side the texel estimates assume")
       ->capture_default_str();
+  command->add_option("--backend", options->backend, "GL context of the check renders: osmesa or egl")
+      ->capture_default_str();
 
   return {command, [options]() {
     CorpusOptions corpus;
     corpus.seed = parseInteger("--seed", options->seed, 0, UINT64_MAX);
     corpus.count = int(parseInteger("--count", options->count, 1, kMaxCount));
     corpus.image = parseSize(options->size);
-    if (options->shadowMap < 16 || options->shadowMap > 16384)
-      throw InputError("--shadow-map: " + std::to_string(options->shadowMap) + " is outside 16..16384");
     corpus.shadowMap = options->shadowMap;
     if (options->meshFolders.empty()) {
       corpus.meshFolders = defaultCorpusMeshFolders();
@@ -54,6 +83,16 @@ CommandRunner addCorpusCommand(CLI::App& app) {
     }
     OutputFiles files(options->out);
     files.claim("manifest.json");
+    // Every scene is rendered once before it is written: what the testbed refuses to
+    // render is never written.
+    const auto context = createContext(options->backend);
+    RenderSettings check;
+    check.size = corpusCheckSize(corpus.image);
+    check.shadowMapSize = corpus.shadowMap;
+    validateSettings({corpus.image, corpus.shadowMap, check.depthFormat, check.repeat, std::nullopt});
+    checkCorpusSizes(corpus.image, corpus.shadowMap);
+    int rendered = 0;
+    corpus.render = [check, &rendered](const Scene& scene) { return renderCheck(scene, check, rendered); };
     const Corpus generated = generateCorpus(corpus);
     for (const auto& scene : generated.scenes) files.writeText(scene.name, scene.text);
     files.writeText("manifest.json", generated.manifest);

@@ -16,6 +16,7 @@
 #include "testbed/gl/context.h"
 #include "testbed/harness/metric_table.h"
 #include "testbed/harness/record.h"
+#include "testbed/scene/camera_check.h"
 #include "testbed/sweep/scene_variant.h"
 #include "testbed/sweep/worst_search.h"
 
@@ -166,6 +167,15 @@ int runWorst(const CLI::App& command, const WorstOptions& o) {
   while (!search.done()) {
     const WorstPoint point = search.next();
     const WorstConfiguration c = configurationAt(base, space, point);
+    // configurationAt keeps the camera within far; what else the written scene's parser
+    // would refuse of a camera is skipped here rather than rendered.
+    try {
+      checkCamera(c.camera, o.scene);
+    } catch (const InputError& error) {
+      search.skip();
+      std::cerr << "[" << search.evaluated() << "/" << o.budget << "] skipped: " << oneLine(error.what()) << "\n";
+      continue;
+    }
     const double figure = evaluate(withConfiguration(base, c), c.shadowMap).figure();
     search.report(point, figure);
     const std::size_t n = search.evaluated();
@@ -179,6 +189,9 @@ int runWorst(const CLI::App& command, const WorstOptions& o) {
   // figure is the written file's, which `compare` reproduces.
   nlohmann::json cases = nlohmann::json::array();
   const auto worst = search.worst(std::size_t(o.k));
+  if (worst.empty())
+    throw InputError("--scene: every one of the " + std::to_string(search.skipped()) +
+                     " configurations drawn had a camera the scene parser refuses");
   for (std::size_t i = 0; i < worst.size(); ++i) {
     const WorstConfiguration c = configurationAt(base, space, worst[i].point);
     const fs::path destination = fs::path(o.common.out) / names[i + 1];
@@ -221,6 +234,7 @@ int runWorst(const CLI::App& command, const WorstOptions& o) {
       {"map_sizes", space.mapSizes},
       {"elevation_deg", {space.elevationMin, space.elevationMax}},
       {"camera", space.moveCamera ? "orbit" : "fixed"},
+      {"skipped", search.skipped()},
       {"backend", context->description()},
       {"cases", cases},
   };

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <random>
 #include <set>
 
@@ -25,9 +26,11 @@ namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 
 constexpr double kPlaneHalf = 40;          // the receiver plane spans [-40, 40]² at y = 0
-constexpr std::size_t kMinTriangles = 4;   // fewer cannot make a shape worth a shadow
 constexpr std::size_t kMaxTriangles = 3'000'000;
 constexpr double kMinThickness = 0.02;     // smallest / largest extent below this: flat
+constexpr double kMaxMeshSize = 22;        // placeMesh fits a mesh to 10–22 units
+constexpr double kCameraFar = 600;
+constexpr std::size_t kMaxStemBytes = 48;  // of a mesh's stem in a scene's file name
 
 // Written numbers are rounded to 1e-4 so that a last-ulp difference of a libm cannot
 // change the text; + 0.0 turns -0 into 0.
@@ -83,10 +86,50 @@ std::string manifestName(const fs::path& file, const fs::path& folder, const fs:
   return inside.empty() || inside == "." ? "assets" : (fs::path("assets") / inside).generic_string();
 }
 
+// A mesh's stem as part of a file name: letters and digits, the rest '-', short enough
+// that "NNN-<stem>.json" stays far below the 255 bytes a file name may have.
 std::string sanitized(const std::string& text) {
   std::string out;
   for (char c : lower(text)) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
-  return out;
+  return out.substr(0, kMaxStemBytes);
+}
+
+// A scene file is JSON, whose strings are UTF-8: a mesh path that is not cannot be named.
+bool isUtf8Text(const std::string& text) {
+  try {
+    (void)Json(text).dump();
+    return true;
+  } catch (const nlohmann::json::type_error&) {
+    return false;
+  }
+}
+
+// `text` with the bytes that are not UTF-8 as U+FFFD, for the manifest's names.
+std::string manifestText(const std::string& text) {
+  return Json::parse(Json(text).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)).get<std::string>();
+}
+
+// A test suite's models made to be refused (assimp's `invalid/`) may still load: they are
+// not shapes anyone meant.
+bool underInvalidFolder(const fs::path& file) {
+  for (const auto& part : file.parent_path())
+    if (lower(part.string()) == "invalid") return true;
+  return false;
+}
+
+// Where the scene parser refuses the mesh as a corpus scene holds it (its largest fit,
+// turned): a transform that is not finite in float (coordinates of 1e-40 fitted to 22
+// units), a zero size. The parser's own message.
+std::optional<std::string> placementProblem(const std::string& reference, const fs::path& file) {
+  const Json probe = {{"camera", {{"eye", {0, 20, 60}}, {"target", {0, 0, 0}}}},
+                      {"light", {{"type", "directional"}, {"direction", {0.3, -1, 0.2}}}},
+                      {"objects", {{{"mesh", reference}, {"fit", kMaxMeshSize}, {"rotate", {90, 45, 0}}}}}};
+  try {
+    parseScene(nlohmann::json::parse(probe.dump()), file);
+  } catch (const InputError& error) {
+    return std::string(error.what());
+  }
+  return std::nullopt;
 }
 
 std::vector<std::pair<fs::path, fs::path>> meshCandidates(const std::vector<fs::path>& folders) {
@@ -113,7 +156,18 @@ std::vector<MeshInfo> usableMeshes(const std::vector<std::pair<fs::path, fs::pat
   const fs::path assets = fs::weakly_canonical(assetDirectory(), ec);
   for (const auto& [file, folder] : candidates) {
     const std::string named = manifestName(file, folder, assets);
-    auto skip = [&](const std::string& why) { skipped.push_back({{"mesh", named}, {"why", why}}); };
+    // A name that is not UTF-8 is kept readable in the manifest, its odd bytes as U+FFFD.
+    auto skip = [&](const std::string& why) {
+      skipped.push_back({{"mesh", manifestText(named)}, {"why", manifestText(why)}});
+    };
+    if (!isUtf8Text(fs::absolute(file).generic_string())) {
+      skip("its path is not UTF-8, which a scene file (JSON) cannot name");
+      continue;
+    }
+    if (underInvalidFolder(fs::absolute(file))) {
+      skip("under a folder named invalid: a model made to be refused");
+      continue;
+    }
     TriMesh mesh;
     try {
       mesh = readMeshFile(file);
@@ -140,14 +194,19 @@ std::vector<MeshInfo> usableMeshes(const std::vector<std::pair<fs::path, fs::pat
     const glm::dvec3 extent = info.hi - info.lo;
     const double largest = std::max({extent.x, extent.y, extent.z});
     const double smallest = std::min({extent.x, extent.y, extent.z});
-    if (info.triangles < kMinTriangles) {
-      skip("only " + std::to_string(info.triangles) + " triangles (fewer than " + std::to_string(kMinTriangles) + ")");
+    if (info.triangles < kCorpusMinTriangles) {
+      skip("only " + std::to_string(info.triangles) + " triangles (fewer than " + std::to_string(kCorpusMinTriangles) +
+           ": a box, not a shape)");
     } else if (info.triangles > kMaxTriangles) {
       skip(std::to_string(info.triangles) + " triangles, more than " + std::to_string(kMaxTriangles));
     } else if (!(smallest > kMinThickness * largest)) {
       skip("flat (thinner than 2 % of its size): it would lie in the receiver plane");
     } else {
       Json key = {info.triangles, r4(extent.x / largest), r4(extent.y / largest), r4(extent.z / largest)};
+      if (const auto problem = placementProblem(info.reference, file)) {
+        skip("the scene parser refuses it as a scene object: " + *problem);
+        continue;
+      }
       const auto [it, fresh] = seen.emplace(key.dump(), named);
       if (!fresh) {
         skip("the same mesh as " + it->second + " (triangle count and proportions)");
@@ -251,8 +310,11 @@ struct SceneSample {
   Json scene, manifest;
 };
 
-SceneSample sampleScene(const CorpusOptions& options, std::size_t index, const std::vector<MeshInfo>& meshes) {
-  Draw draw(splitmix64(options.seed ^ splitmix64(index)));
+// Draw `attempt` of scene `index`: its own stream, so that a scene depends neither on the
+// count nor on how many draws the other scenes needed.
+SceneSample sampleScene(const CorpusOptions& options, std::size_t index, int attempt, const std::vector<MeshInfo>& meshes) {
+  const std::uint64_t stream = splitmix64(options.seed ^ splitmix64(index));
+  Draw draw(attempt == 0 ? stream : splitmix64(stream + std::uint64_t(attempt)));
   // A folder first, then a mesh in it: assimp's many small test cubes would otherwise
   // outnumber the scanned meshes of the assets.
   std::vector<fs::path> folders;
@@ -317,7 +379,7 @@ SceneSample sampleScene(const CorpusOptions& options, std::size_t index, const s
   // along the mesh's shadow at a chosen number of pixels per texel.
   CameraDesc camera;
   camera.fovYDegrees = float(r4(draw.between(35, 60)));
-  camera.farPlane = 600;
+  camera.farPlane = float(kCameraFar);
   const bool closeUp = draw.chance(0.5);
   glm::dvec3 point = placed.foot;  // where the estimates are taken (on the plane)
   double wantedPixelsPerTexel = 0;
@@ -381,7 +443,8 @@ SceneSample sampleScene(const CorpusOptions& options, std::size_t index, const s
   sample.scene = {
       {"name", name},
       {"comment", "Generated by testbed corpus --seed " + std::to_string(options.seed) + " (scene " +
-                      std::to_string(index) + "): " + mesh.stem + ", " + (spot ? "spot" : "directional") +
+                      std::to_string(index) + (attempt > 0 ? ", draw " + std::to_string(attempt) : "") +
+                      "): " + mesh.stem + ", " + (spot ? "spot" : "directional") +
                       " light at elevation " + Json(elevation).dump() + " deg, " +
                       (closeUp ? "close-up" : "overview") + " camera" + extrasText + "."},
       {"camera", {{"eye", vec(camera.eye)}, {"target", vec(camera.target)}, {"fov_y", camera.fovYDegrees},
@@ -403,7 +466,56 @@ SceneSample sampleScene(const CorpusOptions& options, std::size_t index, const s
   return sample;
 }
 
+std::string shareText(double share) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g %%", share * 100);
+  return text;
+}
+
+// Why a drawn scene cannot be written (nullopt: it can), as a user's copy of it would
+// meet the testbed: read by the scene parser from its text, then rendered; `counts` gets
+// its ground truth's figures.
+std::optional<std::string> draftRefusal(const CorpusOptions& options, const std::string& file, const std::string& text,
+                                   GroundTruthCounts& counts) {
+  try {
+    const Scene scene = parseScene(nlohmann::json::parse(text), file);
+    counts = options.render(scene);
+  } catch (const InputError& error) {
+    return std::string(error.what());
+  }
+  const glm::ivec2 size = corpusCheckSize(options.image);
+  const std::string at = " at " + std::to_string(size.x) + "x" + std::to_string(size.y);
+  if (counts.boundaryPixels < kCorpusMinBoundaryPixels)
+    return "the ground truth has " + std::to_string(counts.boundaryPixels) + " boundary pixels" + at + ", fewer than " +
+           std::to_string(kCorpusMinBoundaryPixels);
+  const double least = kCorpusMinStateShare * counts.receivers;
+  if (counts.litReceivers < least || counts.shadowReceivers < least)
+    return "the ground truth has " + std::to_string(counts.litReceivers) + " lit and " +
+           std::to_string(counts.shadowReceivers) + " shadowed of " + std::to_string(counts.receivers) +
+           " receivers" + at + ": each needs " + shareText(kCorpusMinStateShare) + " of them";
+  return std::nullopt;
+}
+
 }  // namespace
+
+glm::ivec2 corpusCheckSize(glm::ivec2 image) {
+  const int longer = std::max(image.x, image.y), shorter = std::min(image.x, image.y);
+  const int scaled = std::max(1, int(std::lround(double(kCorpusCheckSide) * shorter / longer)));
+  return image.x >= image.y ? glm::ivec2(kCorpusCheckSide, scaled) : glm::ivec2(scaled, kCorpusCheckSide);
+}
+
+void checkCorpusSizes(glm::ivec2 image, int shadowMap) {
+  const std::string size = std::to_string(image.x) + "x" + std::to_string(image.y);
+  const double aspect = double(image.x) / image.y;
+  if (!(aspect <= kCorpusMaxAspect && aspect >= 1 / kCorpusMaxAspect))
+    throw InputError("--size: " + size + " is wider or taller than " + std::to_string(int(kCorpusMaxAspect)) +
+                     ":1, beyond the screens the generated cameras frame a scene for");
+  const double rows = double(image.y) / shadowMap;
+  if (rows <= kCorpusMaxRowsPerTexel) return;
+  throw InputError("--shadow-map: " + std::to_string(shadowMap) + " is too small for --size " + size + ": close-ups where a texel covers 4 pixels would stand beyond the "
+                   "camera's far plane (" + Json(kCameraFar).dump() + "); give at least " +
+                   std::to_string(int(std::ceil(image.y / kCorpusMaxRowsPerTexel))) + " or a smaller height");
+}
 
 std::vector<fs::path> defaultCorpusMeshFolders() { return {assetDirectory(), "/usr/share/assimp/models"}; }
 
@@ -434,25 +546,51 @@ Corpus generateCorpus(const CorpusOptions& options) {
     for (const auto& f : options.meshFolders) folders += (folders.empty() ? "" : ", ") + f.generic_string();
     throw InputError("--meshes: no usable .off/.obj/.ply/.stl mesh in " + (folders.empty() ? "(no folder)" : folders));
   }
+  const glm::ivec2 checkSize = corpusCheckSize(options.image);
   Corpus corpus;
   Json manifest = {{"generator", "testbed corpus"},
                    {"seed", options.seed},
                    {"count", options.count},
                    {"assumed", {{"size", {options.image.x, options.image.y}}, {"shadow_map", options.shadowMap}}},
+                   {"admitted",
+                    {{"min_triangles", kCorpusMinTriangles},
+                     {"check_size", {checkSize.x, checkSize.y}},
+                     {"min_boundary_px", kCorpusMinBoundaryPixels},
+                     {"min_state_share", kCorpusMinStateShare}}},
                    {"mesh_folders", Json::array()},
                    {"meshes", Json::array()},
                    {"skipped", skipped},
                    {"scenes", Json::array()}};
   std::error_code ec;
   const fs::path assets = fs::weakly_canonical(assetDirectory(), ec);
-  for (const auto& f : options.meshFolders) manifest["mesh_folders"].push_back(manifestName(f, f, assets));
+  for (const auto& f : options.meshFolders) manifest["mesh_folders"].push_back(manifestText(manifestName(f, f, assets)));
   for (const auto& m : meshes) manifest["meshes"].push_back({{"mesh", m.named}, {"triangles", m.triangles}});
   for (int i = 0; i < options.count; ++i) {
-    SceneSample sample = sampleScene(options, std::size_t(i), meshes);
-    corpus.scenes.push_back({sample.manifest["file"].get<std::string>(), sample.scene.dump(2) + "\n"});
-    manifest["scenes"].push_back(std::move(sample.manifest));
+    Json rejected = Json::array();
+    for (int attempt = 0;; ++attempt) {
+      if (attempt == kCorpusMaxDraws)
+        throw InputError("--meshes: scene " + std::to_string(i) + ": none of " + std::to_string(kCorpusMaxDraws) +
+                         " draws made an admissible scene (last: " + rejected.back()["why"].get<std::string>() + ")");
+      SceneSample sample = sampleScene(options, std::size_t(i), attempt, meshes);
+      const std::string file = sample.manifest["file"].get<std::string>(), text = sample.scene.dump(2) + "\n";
+      GroundTruthCounts counts;
+      const std::optional<std::string> why = draftRefusal(options, file, text, counts);
+      if (why) {
+        rejected.push_back({{"draw", attempt}, {"why", manifestText(*why)}});
+        continue;
+      }
+      sample.manifest["draw"] = attempt;
+      sample.manifest["rejected_draws"] = rejected;
+      sample.manifest["check"] = {{"receivers", counts.receivers},
+                                  {"boundary_px", counts.boundaryPixels},
+                                  {"lit", counts.litReceivers},
+                                  {"shadowed", counts.shadowReceivers}};
+      corpus.scenes.push_back({file, text});
+      manifest["scenes"].push_back(std::move(sample.manifest));
+      break;
+    }
   }
-  corpus.manifest = manifest.dump(2) + "\n";
+  corpus.manifest = manifest.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
   return corpus;
 }
 

@@ -31,8 +31,12 @@ WorstConfiguration configurationAt(const Scene& base, const WorstSpace& space, c
   else
     c.light.eye = c.light.target + towardLight * glm::length(base.light.eye - base.light.target);
   if (space.moveCamera) {
-    const float distance = glm::length(base.camera.eye - base.camera.target) *
-                           float(lerp(space.distanceMin, space.distanceMax, u[4]));
+    // The range stops short of the far plane: beyond it the target is clipped away and the
+    // scene parser refuses the camera.
+    const double baseDistance = glm::length(glm::dvec3(base.camera.eye) - glm::dvec3(base.camera.target));
+    const double reach = std::min(space.distanceMax, kMaxFarShare * double(base.camera.farPlane) / baseDistance);
+    const double lo = std::min(space.distanceMin, reach);
+    const float distance = float(baseDistance * lerp(lo, reach, u[4]));
     c.camera.eye = c.camera.target +
                    unitAt(lerp(space.cameraElevationMin, space.cameraElevationMax, u[3]), 360.0 * u[2]) * distance;
   }
@@ -75,6 +79,11 @@ void WorstSearch::report(const WorstPoint& point, double figure) {
   const WorstCase c{point, figure, evaluated_++};
   cases_.push_back(c);
   if (!best_ || figure > best_->figure) best_ = c;
+}
+
+void WorstSearch::skip() {
+  ++evaluated_;
+  ++skipped_;
 }
 
 std::vector<WorstCase> WorstSearch::worst(std::size_t k) const {

@@ -20,7 +20,7 @@ struct WorstSpace {
   double elevationMin = 3, elevationMax = 85;  // the light's elevation above the y = 0 plane
   bool moveCamera = true;                      // orbit the camera around its target
   double cameraElevationMin = 10, cameraElevationMax = 80;
-  double distanceMin = 0.5, distanceMax = 1.5;  // times the scene's camera distance
+  double distanceMin = 0.5, distanceMax = 1.5;  // times the scene's camera distance (within far)
   std::vector<int> mapSizes{256, 512, 1024};
 };
 
@@ -38,8 +38,12 @@ struct WorstConfiguration {
   double lightElevation = 0, lightAzimuth = 0;  // degrees, as drawn
 };
 
+// The farthest a moved camera stands from its target, as a share of its far plane.
+inline constexpr double kMaxFarShare = 0.95;
+
 // `base` with the point's light and camera: the light keeps its target (and a spot light
-// its distance to it), the camera its target and up; y is up.
+// its distance to it), the camera its target and up; y is up. The camera's distance range
+// is cut at kMaxFarShare of its far plane.
 WorstConfiguration configurationAt(const Scene& base, const WorstSpace& space, const WorstPoint& point);
 
 struct WorstCase {
@@ -57,15 +61,19 @@ class WorstSearch {
   bool done() const { return evaluated_ >= budget_; }
   WorstPoint next();
   void report(const WorstPoint& point, double figure);
+  // A point whose configuration the testbed would refuse: it spends its share of the
+  // budget and is neither a case nor a centre for the refinement.
+  void skip();
   // The `k` largest figures, largest first (ties: earlier evaluation first).
   std::vector<WorstCase> worst(std::size_t k) const;
-  std::size_t evaluated() const { return evaluated_; }
+  std::size_t evaluated() const { return evaluated_; }  // reported and skipped
+  std::size_t skipped() const { return skipped_; }
 
  private:
   double uniform();
   double gaussian();
   std::mt19937_64 random_;
-  std::size_t budget_, explore_, evaluated_ = 0;
+  std::size_t budget_, explore_, evaluated_ = 0, skipped_ = 0;
   std::vector<WorstCase> cases_;
   std::optional<WorstCase> best_;
 };

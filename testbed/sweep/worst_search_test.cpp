@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "testbed/scene/camera_check.h"
 #include "testbed/sweep/worst_search.h"
 
 namespace testbed {
@@ -39,6 +40,22 @@ TEST(WorstSearch, ConfigurationsPlaceLightCameraAndMapAsThePointSays) {
   EXPECT_NEAR(spot.camera.eye.y, 50.0f * std::sin(M_PI / 18), 1e-4);
   space.moveCamera = false;
   EXPECT_EQ(configurationAt(baseScene(LightType::Spot), space, p).camera, baseScene(LightType::Spot).camera);
+}
+
+// The orbit's distance range (0.5–1.5 times the scene's) is cut at 95 % of the far plane:
+// with the camera 50 away and far 60, the farthest point stands 57 away, the nearest 25,
+// and each passes the scene parser's camera checks.
+TEST(WorstSearch, TheOrbitStaysWithinTheFarPlane) {
+  Scene scene = baseScene(LightType::Directional);
+  scene.camera.farPlane = 60;
+  WorstPoint p;
+  for (double u : {0.0, 0.5, std::nextafter(1.0, 0.0)}) {
+    p.u = {0.5, 0.5, 0.3, 0.5, u, 0.0};
+    const WorstConfiguration c = configurationAt(scene, WorstSpace{}, p);
+    const float distance = glm::length(c.camera.eye - c.camera.target);
+    EXPECT_NEAR(distance, 25.0f + float(u) * 32.0f, 1e-3) << u;
+    EXPECT_NO_THROW(checkCamera(c.camera, "scene.json")) << u;
+  }
 }
 
 // A figure peaking at elevation coordinate 0.1 and map index coordinate 0.9.
