@@ -2,11 +2,14 @@
 // from a plugin. One line per check, PASS or FAIL and what it saw; exit 0 when all pass, 1
 // when any fails, 2 on bad input (before any check runs). SKIP: a check this build cannot run.
 //
-// Each check runs in a process of its own: this binary again, with the hidden option
-// --run-check NAME, which writes its verdict to file descriptor 3. A technique that crashes,
-// calls exit or loops forever then fails the one check it was in, named with what happened,
-// and the others still run. Re-executing (not forking) keeps the child clear of the parent's
-// GL context: a fork of a process with a Mesa context is not safe to render in.
+// The checks run in a check process, not in this one: this binary again, with the hidden
+// option --run-checks-from NAME, which runs the checks from NAME on and writes each verdict
+// to file descriptor 3 as it is known. A technique that crashes, calls exit or loops forever
+// (past --check-timeout) fails the check it was in, named with what happened, and the next
+// check starts in a fresh process; while checks return, one process runs them all (a
+// process per check would start a GL context and compile the shaders eight times).
+// Re-executing rather than forking keeps the child clear of this process's GL context: a
+// fork of a process holding a Mesa context is not safe to render in.
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
@@ -107,22 +110,26 @@ std::string verdictText(const ConformanceCheck& check) {
   return std::string(check.skipped ? "SKIP" : check.passed ? "PASS" : "FAIL") + "\t" + oneLine(check.detail) + "\n";
 }
 
-// Runs one check here, in the child, and writes its verdict to kVerdictFd.
-int runCheckHere(const NamedCheck& check, const CheckInputs& inputs) {
-  ConformanceCheck result;
-  try {
-    result = check.run(inputs);
-  } catch (const std::exception& error) {  // the checks catch the technique's; this is the harness's
-    result = {check.name, false, std::string("the check threw: ") + error.what()};
-  } catch (...) {
-    result = {check.name, false, "the technique threw a non-std::exception"};
-  }
-  const std::string text = verdictText(result);
-  for (std::size_t done = 0; done < text.size();) {
-    const ssize_t n = ::write(kVerdictFd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) throw std::runtime_error(std::string("conform --run-check: cannot write the verdict: ") + std::strerror(errno));
-    done += std::size_t(n);
+// Runs the checks from `first` on here, in a check process, writing each verdict to
+// kVerdictFd as soon as it is known.
+int runChecksHere(std::size_t first, const CheckInputs& inputs) {
+  for (std::size_t i = first; i < std::size(kChecks); ++i) {
+    ConformanceCheck result;
+    try {
+      result = kChecks[i].run(inputs);
+    } catch (const std::exception& error) {  // the checks catch the technique's; this is the harness's
+      result = {kChecks[i].name, false, std::string("the check threw: ") + error.what()};
+    } catch (...) {
+      result = {kChecks[i].name, false, "the technique threw a non-std::exception"};
+    }
+    const std::string text = verdictText(result);
+    for (std::size_t done = 0; done < text.size();) {
+      const ssize_t n = ::write(kVerdictFd, text.data() + done, text.size() - done);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0)
+        throw std::runtime_error(std::string("conform --run-checks-from: cannot write a verdict: ") + std::strerror(errno));
+      done += std::size_t(n);
+    }
   }
   return 0;
 }
@@ -153,9 +160,13 @@ int movedUp(int fd) {
   return moved;
 }
 
-// Runs `args` (this binary's) in a child with the verdict pipe on kVerdictFd, killing it
-// after `limitSeconds`; returns the check's line.
-ConformanceCheck runCheckInChild(const char* name, const std::vector<std::string>& args, double limitSeconds) {
+// Runs the checks from `first` on in a check process started with `args` (this binary's,
+// --run-checks-from added) and the verdict pipe on kVerdictFd. Each check may take
+// `limitSeconds` from the previous verdict (the first, from the start); a process that is
+// killed, exits or overruns fails the check it was in. Returns the lines of the checks it
+// reached: at least one, up to the first it did not finish.
+std::vector<ConformanceCheck> runChecksInChild(std::size_t first, std::vector<std::string> args, double limitSeconds) {
+  args.insert(args.end(), {"--run-checks-from", kChecks[first].name});
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0)
     throw std::runtime_error(std::string("conform: cannot create a pipe: ") + std::strerror(errno));
@@ -178,24 +189,33 @@ ConformanceCheck runCheckInChild(const char* name, const std::vector<std::string
   // Readable when the child has ended (Linux 5.3); without it the loop wakes every 50 ms.
   const int pidFd = int(::syscall(SYS_pidfd_open, pid, 0));
 
+  std::vector<ConformanceCheck> results;
+  std::string pending;  // a verdict not yet ended by its newline
+  const std::size_t count = std::size(kChecks) - first;
   using Clock = std::chrono::steady_clock;
-  const auto deadline = Clock::now() + std::chrono::duration<double>(limitSeconds);
-  std::string verdict;
-  int status = 0;
-  bool ended = false, timedOut = false, open = true;
-  // Appends what the pipe holds now; false at its end (every writer closed).
+  const auto limit = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limitSeconds));
+  auto deadline = Clock::now() + limit;
+  // Appends what the pipe holds now, each whole verdict to `results`; false at the pipe's
+  // end (every writer closed).
   auto readAvailable = [&] {
     char buffer[4096];
     for (;;) {
       const ssize_t n = ::read(readFd, buffer, sizeof buffer);
-      if (n > 0) {
-        verdict.append(buffer, std::size_t(n));
-        continue;
-      }
       if (n < 0 && errno == EINTR) continue;
-      return n != 0;
+      if (n <= 0) return n != 0;
+      pending.append(buffer, std::size_t(n));
+      for (std::size_t end; (end = pending.find('\n')) != std::string::npos && results.size() < count;) {
+        const std::string line = pending.substr(0, end);
+        pending.erase(0, end + 1);
+        const std::size_t tab = line.find('\t');
+        const std::string word = line.substr(0, tab), detail = tab == std::string::npos ? "" : line.substr(tab + 1);
+        results.push_back({kChecks[first + results.size()].name, word == "PASS" || word == "SKIP", detail, word == "SKIP"});
+        deadline = Clock::now() + limit;  // the next check's time starts now
+      }
     }
   };
+  int status = 0;
+  bool ended = false, timedOut = false, open = true;
   while (!ended) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
     if (left <= 0) {
@@ -205,32 +225,31 @@ ConformanceCheck runCheckInChild(const char* name, const std::vector<std::string
       break;
     }
     pollfd watched[2] = {{open ? readFd : -1, POLLIN, 0}, {pidFd, POLLIN, 0}};
-    const int wait = pidFd >= 0 ? int(std::min<long long>(left, 1000)) : int(std::min<long long>(left, 50));
-    ::poll(watched, 2, wait);
+    ::poll(watched, 2, int(std::min<long long>(left, pidFd >= 0 ? 1000 : 50)));
     if (open && (watched[0].revents & (POLLIN | POLLHUP))) open = readAvailable();
-    const pid_t reaped = ::waitpid(pid, &status, WNOHANG);
-    ended = reaped == pid;
+    ended = ::waitpid(pid, &status, WNOHANG) == pid;
   }
   if (open) readAvailable();
   ::close(readFd);
   if (pidFd >= 0) ::close(pidFd);
 
-  const bool reported = !verdict.empty() && verdict.back() == '\n' && verdict.find('\t') != std::string::npos;
   const bool clean = !timedOut && WIFEXITED(status) && WEXITSTATUS(status) == 0;
   const std::string what = timedOut ? "timed out after " + secondsText(limitSeconds) + " s" : exitText(status);
-  if (!reported) return {name, false, what + " before reporting"};
-  const std::string word = verdict.substr(0, verdict.find('\t'));
-  std::string detail = verdict.substr(word.size() + 1);
-  detail.pop_back();
-  if (!clean) return {name, false, "reported " + word + ", then " + what};
-  return {name, word != "FAIL", detail, word == "SKIP"};
+  if (results.size() < count) {
+    results.push_back({kChecks[first + results.size()].name, false, what + " before reporting"});
+  } else if (!clean) {  // every check reported, then the process died (at exit: a destructor, a plugin's)
+    ConformanceCheck& last = results.back();
+    last = {last.name, false, "reported " + std::string(last.skipped ? "SKIP" : last.passed ? "PASS" : "FAIL") +
+                                  ", then " + what};
+  }
+  return results;
 }
 
 }  // namespace
 
 CommandRunner addConformCommand(CLI::App& app) {
   struct Options {
-    std::string technique, backend = "osmesa", runCheck;
+    std::string technique, backend = "osmesa", runChecksFrom;
     std::vector<std::string> assignments, plugins;
     double checkTimeout = 600;
   };
@@ -244,8 +263,8 @@ CommandRunner addConformCommand(CLI::App& app) {
   command->add_option("--check-timeout", options->checkTimeout,
                       "seconds each check may take, its process's start included, before it is killed and fails")
       ->capture_default_str();
-  // Internal: the process of one check (see the top of this file).
-  command->add_option("--run-check", options->runCheck)->group("");
+  // Internal: a check process (see the top of this file).
+  command->add_option("--run-checks-from", options->runChecksFrom)->group("");
 
   return {command, [options]() {
     if (!std::isfinite(options->checkTimeout) || options->checkTimeout <= 0 || options->checkTimeout > 86400)
@@ -255,13 +274,13 @@ CommandRunner addConformCommand(CLI::App& app) {
     const auto assignments = parseAssignments(options->assignments);
     const ParameterSet parameters = resolveParameters(technique.info->id, technique.info->parameters, assignments);
     const CheckInputs inputs{technique, parameters, assignments, options->backend};
-    if (!options->runCheck.empty()) {
-      for (const auto& check : kChecks)
-        if (options->runCheck == check.name) {
+    if (!options->runChecksFrom.empty()) {
+      for (std::size_t i = 0; i < std::size(kChecks); ++i)
+        if (options->runChecksFrom == kChecks[i].name) {
           auto context = createContext(options->backend);
-          return runCheckHere(check, inputs);
+          return runChecksHere(i, inputs);
         }
-      throw InputError("--run-check: no check named '" + oneLine(options->runCheck) + "'");
+      throw InputError("--run-checks-from: no check named '" + oneLine(options->runChecksFrom) + "'");
     }
     // The context here only says what the checks will run on, and refuses a bad --backend
     // before any check runs.
@@ -272,14 +291,16 @@ CommandRunner addConformCommand(CLI::App& app) {
     for (const auto& plugin : options->plugins) args.insert(args.end(), {"--plugin", plugin});
     for (const auto& assignment : options->assignments) args.insert(args.end(), {"--set", assignment});
     bool allPassed = true;
-    for (const auto& check : kChecks) {
-      std::vector<std::string> checkArgs = args;
-      checkArgs.insert(checkArgs.end(), {"--run-check", check.name});
-      const ConformanceCheck result = runCheckInChild(check.name, checkArgs, options->checkTimeout);
-      allPassed = allPassed && result.passed;
-      std::cout << (result.skipped ? "SKIP " : result.passed ? "PASS " : "FAIL ") << result.name << ": "
-                << oneLine(result.detail) << "\n"
-                << std::flush;
+    // One process runs the checks while they return; after one that does not, the next
+    // check starts in a fresh process.
+    for (std::size_t next = 0; next < std::size(kChecks);) {
+      for (const ConformanceCheck& result : runChecksInChild(next, args, options->checkTimeout)) {
+        allPassed = allPassed && result.passed;
+        std::cout << (result.skipped ? "SKIP " : result.passed ? "PASS " : "FAIL ") << result.name << ": "
+                  << oneLine(result.detail) << "\n"
+                  << std::flush;
+        ++next;
+      }
     }
     return allPassed ? 0 : 1;
   }};

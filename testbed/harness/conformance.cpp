@@ -376,7 +376,7 @@ ConformanceCheck checkDeclaredPasses(const RegisteredTechnique& technique) {
                                    " runs (defaults and every parameter at each limit, spot and directional)");
     }
     return passedCheck(name, "each of the " + std::to_string(declared.size()) + " passes declared for this path ran (" +
-                                 std::to_string(runs) + " runs)");
+                                 std::to_string(runs) + (runs == 1 ? " run)" : " runs)"));
   });
 }
 

@@ -58,8 +58,10 @@ class DefectTechnique final : public WithParameters<DefectParameters> {
 #elif defined(DEFECT_EXIT_ZERO)
     _exit(0);
 #elif defined(DEFECT_SEGFAULT)
-    int* volatile nowhere = nullptr;  // volatile: the compiler cannot see the null and trap instead
-    *nowhere = 1;
+    // A volatile pointer to volatile: the compiler can neither see the null (and trap with
+    // SIGILL instead) nor drop the store.
+    int* volatile nowhere = nullptr;
+    *static_cast<volatile int*>(nowhere) = 1;
 #elif defined(DEFECT_ABORT)
     std::abort();
 #elif defined(DEFECT_THROW_INT)
