@@ -11,6 +11,7 @@
 
 #include "testbed/technique/registry.h"
 #include "tests/cli_helpers.h"
+#include "testbed_conform_plugins.h"
 #include "testbed_test_paths.h"
 
 namespace testbed {
