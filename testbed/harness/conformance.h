@@ -51,8 +51,8 @@ std::vector<FrustumCase> frustumCases();
 Scene conformanceBoxScene(bool spot);
 
 // The checks. Each needs a current GL context and catches what the technique throws,
-// std::exception or not. `testbed conform` runs each in a process of its own, so that a
-// technique that crashes, exits or hangs fails the check it was in.
+// std::exception or not. `testbed conform` runs them in a child process, so that a
+// technique that crashes, exits or hangs fails the check it was in (app/command_conform.cpp).
 ConformanceCheck checkParameterExtremes(const RegisteredTechnique& technique);
 // Each pass declared for the run's path runs at least once over the parameter-extremes runs.
 ConformanceCheck checkDeclaredPasses(const RegisteredTechnique& technique);
