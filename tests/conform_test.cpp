@@ -1,8 +1,9 @@
 // `testbed conform` (docs/conformance.md): every in-tree technique passes every check (one
 // test each, so a regression names its technique), the plugins of tests/conform_plugins/
 // each fail on the line of the defect planted in them and pass the rest, the example plugins
-// of tests/plugin_example/ pass every check, and bad input exits 2
-// before any check runs.
+// of tests/plugin_example/ pass every check, hostile plugins (exit, crash, abort, throw an
+// int, hang) fail each check they take down, named with what happened, and bad input exits
+// 2 before any check runs.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -10,6 +11,7 @@
 
 #include "testbed/technique/registry.h"
 #include "tests/cli_helpers.h"
+#include "testbed_conform_plugins.h"
 #include "testbed_test_paths.h"
 
 namespace testbed {
@@ -32,7 +34,7 @@ std::vector<std::string> linesStartingWith(const std::string& out, const std::st
   return lines;
 }
 
-constexpr std::size_t kChecks = 7;
+constexpr std::size_t kChecks = 8;
 
 // SKIP: viewer-equals-render in a build without the viewer.
 std::size_t passedOrSkipped(const std::string& out) {
@@ -115,11 +117,69 @@ TEST(ConformDefects, MemoryHiddenFromTheLedgerFailsTheLedger) {
   expectFailures(TESTBED_CONFORM_HIDDEN_MEMORY, "defect-hidden-memory", {"memory-ledger"});
 }
 
+TEST(ConformDefects, RawGlTexturesNeverFreedFailTheLedger) {
+  expectFailures(TESTBED_CONFORM_RAW_TEXTURE_LEAK, "defect-raw-texture-leak", {"memory-ledger"});
+}
+
+TEST(ConformDefects, ADeclaredPassThatNeverRunsFailsDeclaredPasses) {
+  expectFailures(TESTBED_CONFORM_UNRUN_PASS, "defect-unrun-pass", {"declared-passes"});
+}
+
+// The line of `check` in `out`, empty if none.
+std::string lineOf(const std::string& out, const std::string& check) {
+  for (const auto& prefix : {"PASS ", "FAIL ", "SKIP "})
+    for (const auto& line : linesStartingWith(out, prefix))
+      if (line.rfind(prefix + check + ":", 0) == 0) return line;
+  return "";
+}
+
+// A plugin that takes its process down (or never returns) in every frame: exit 1 and every
+// check that renders FAILs naming `fault`; the checks are each in a process of their own,
+// so each one is reached and named.
+void expectEveryRenderingCheckNames(const char* plugin, const std::string& id, const std::string& fault,
+                                    std::vector<std::string> extra = {}) {
+  std::vector<std::string> args = {"conform", "--plugin", plugin, "--technique", id};
+  args.insert(args.end(), extra.begin(), extra.end());
+  const RunResult run = runTestbed(args);
+  EXPECT_EQ(run.exitCode, 1) << run.describe() << "\n" << run.out;
+  for (const char* check : {"parameter-extremes", "declared-passes", "facing", "light-frustum", "viewer-equals-render",
+                            "determinism", "memory-ledger"}) {
+    const std::string line = lineOf(run.out, check);
+    if (line.rfind("SKIP ", 0) == 0) continue;
+    EXPECT_EQ(line.rfind(std::string("FAIL ") + check + ":", 0), 0u) << check << "\n" << run.out;
+    EXPECT_NE(line.find(fault), std::string::npos) << line;
+  }
+}
+
+TEST(ConformHostile, ExitZeroIsAFailureNotAPass) {
+  expectEveryRenderingCheckNames(TESTBED_CONFORM_EXIT_ZERO, "defect-exit-zero", "exited with status 0 before reporting");
+}
+
+TEST(ConformHostile, ASegfaultNamesTheCheckAndTheSignal) {
+  expectEveryRenderingCheckNames(TESTBED_CONFORM_SEGFAULT, "defect-segfault", "killed by SIGSEGV");
+}
+
+TEST(ConformHostile, AnAbortNamesTheCheckAndTheSignal) {
+  expectEveryRenderingCheckNames(TESTBED_CONFORM_ABORT, "defect-abort", "killed by SIGABRT");
+}
+
+TEST(ConformHostile, ThrowingAnIntIsNamed) {
+  expectEveryRenderingCheckNames(TESTBED_CONFORM_THROW_INT, "defect-throw-int", "threw a non-std::exception");
+}
+
+// The plugin sleeps forever in its first frame: each check is killed at its limit.
+TEST(ConformHostile, AnInfiniteLoopTimesOut) {
+  expectEveryRenderingCheckNames(TESTBED_CONFORM_INFINITE_LOOP, "defect-infinite-loop", "timed out after 1 s",
+                                 {"--check-timeout", "1"});
+}
+
 TEST(ConformBadInput, ExitsTwoWithOneLineAndNoCheck) {
   for (const std::vector<std::string>& args :
        {std::vector<std::string>{"conform", "--technique", "no-such-technique"},
         std::vector<std::string>{"conform", "--technique", "pcf", "--set", "kernel=4"},
         std::vector<std::string>{"conform", "--technique", "pcf", "--set", "no_such=1"},
+        std::vector<std::string>{"conform", "--technique", "pcf", "--check-timeout", "0"},
+        std::vector<std::string>{"conform", "--technique", "pcf", "--check-timeout", "nan"},
         std::vector<std::string>{"conform"}}) {
     const RunResult run = runTestbed(args);
     EXPECT_EQ(run.exitCode, 2) << run.describe();

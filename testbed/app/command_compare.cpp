@@ -3,6 +3,7 @@
 // grid.png, speed_vs_error.svg and index.html (report_html.h).
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 
 #include "groundtruth/shadow_volumes.h"
 #include "testbed/app/commands.h"
@@ -193,8 +194,12 @@ CommandRunner addCompareCommand(CLI::App& app) {
       const std::string& id = techniques[i]->info->id;
       progress(id);
       const TechniqueRun run = runner.run(*techniques[i], parameters[i]);
-      const ErrorMetrics error =
-          computeErrorMetrics(run.visibility, truth.visibility, area ? &area->visibility : nullptr);
+      ErrorMetrics error;
+      try {
+        error = computeErrorMetrics(run.visibility, truth.visibility, area ? &area->visibility : nullptr);
+      } catch (const std::invalid_argument& e) {  // which technique wrote the pixel it names
+        throw std::runtime_error("technique " + id + ": " + e.what());
+      }
       Record record = makeRecord(run, runner, backend);
       record.error = error;
       writeOutputs(id, run, record);

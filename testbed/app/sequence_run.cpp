@@ -67,8 +67,7 @@ std::vector<nlohmann::json> runSequence(const SequenceJob& job, Scene& scene, Fr
     records.push_back(outcomes[e].record);
     files.writeText(id + "_sequence.json", records.back().dump(2) + "\n");
     if (job.compare && job.plots) {
-      const fs::path series = work.path() / (id + "_frames.json");
-      std::ofstream(series) << frames;
+      const fs::path series = work.write(id + "_frames.json", frames);
       plotSeries(series, work.path());
       files.writeText(id + "_error_over_time.png", WorkFolder::read(work.path() / (id + "_error_over_time.png")));
     }

@@ -34,8 +34,7 @@ std::string slug(const std::string& text) {
 // table, so a failing plot leaves nothing committed rather than tables without their plots.
 void stagePlot(OutputFiles& files, const std::string& name, const std::string& tableJson) {
   const WorkFolder work("testbed-plot");
-  const fs::path table = work.path() / (name + ".json");
-  std::ofstream(table, std::ios::binary) << tableJson;
+  const fs::path table = work.write(name + ".json", tableJson);
   runPythonScript("sweep_plot.py", {table.string()}, (files.directory() / (name + ".json")).string());
   for (const char* extension : {".png", ".svg"})
     files.writeText(name + extension, WorkFolder::read(work.path() / (name + extension)));

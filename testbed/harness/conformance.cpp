@@ -1,9 +1,12 @@
 #include "testbed/harness/conformance.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <exception>
 #include <functional>
+#include <iterator>
+#include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -12,6 +15,7 @@
 #include "testbed/gl/render_target.h"
 #include "testbed/harness/record.h"
 #include "testbed/scene/primitives.h"
+#include "testbed/technique/declaration.h"
 
 namespace testbed {
 namespace {
@@ -35,12 +39,17 @@ std::string pixelText(const ImageF& image, std::size_t i) {
 ConformanceCheck passedCheck(std::string name, std::string detail) { return {std::move(name), true, std::move(detail)}; }
 ConformanceCheck failedCheck(std::string name, std::string detail) { return {std::move(name), false, std::move(detail)}; }
 
+// What a check says when the technique throws something that is no std::exception (`throw 42`).
+constexpr const char* kThrewNonStd = "the technique threw a non-std::exception";
+
 // Runs `body`; a technique that throws fails the check with what it threw.
 ConformanceCheck guarded(const std::string& name, const std::function<ConformanceCheck()>& body) {
   try {
     return body();
   } catch (const std::exception& error) {
     return failedCheck(name, std::string("the technique threw: ") + error.what());
+  } catch (...) {
+    return failedCheck(name, kThrewNonStd);
   }
 }
 
@@ -111,6 +120,87 @@ int badReceivers(const ImageF& visibility, const ImageF& positions, std::string&
 }
 
 bool sameBits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// One run of the parameter-extremes sweep: `parameter` set to `value`, or the defaults
+// (both empty), the others at their defaults.
+struct ExtremeCase {
+  std::string parameter, value;
+  std::string describe(const Scene& scene) const {
+    return (parameter.empty() ? std::string("the defaults") : "--set " + parameter + "=" + value) + " on " + scene.name;
+  }
+};
+
+// The defaults first, then each parameter at each of its limits.
+std::vector<ExtremeCase> extremeCases(const RegisteredTechnique& technique) {
+  std::vector<ExtremeCase> cases = {{"", ""}};
+  for (const auto& spec : technique.info->parameters)
+    for (const auto& value : parameterLimits(spec)) cases.push_back({spec.name, value});
+  return cases;
+}
+
+TechniqueRun runCase(FrameRunner& runner, const RegisteredTechnique& technique, const ExtremeCase& c) {
+  return c.parameter.empty() ? runWith(runner, technique, {}) : runWith(runner, technique, {{c.parameter, c.value}});
+}
+
+// The live GL objects of one kind that can hold memory: textures, buffers, renderbuffers.
+// GL cannot list its objects, so the names are probed: the context hands out names either
+// one past the highest in use (older Mesa) or the lowest free one (Mesa's id allocator, most
+// drivers), so every live name lies below a freshly generated one plus the most objects a
+// run holds. kNameSpan bounds that second term generously; the probe runs on past every
+// live name found by the same span, so a dense block of leaked names is followed to its end.
+constexpr GLuint kNameSpan = 1 << 16;
+
+struct GlObjectKind {
+  const char* plural;
+  GLboolean (*exists)(GLuint);
+  void (*generate)(GLsizei, GLuint*);
+  void (*remove)(GLsizei, const GLuint*);
+};
+
+std::vector<GlObjectKind> glObjectKinds() {
+  return {{"textures", [](GLuint n) { return glIsTexture(n); }, [](GLsizei k, GLuint* n) { glGenTextures(k, n); },
+           [](GLsizei k, const GLuint* n) { glDeleteTextures(k, n); }},
+          {"buffers", [](GLuint n) { return glIsBuffer(n); }, [](GLsizei k, GLuint* n) { glGenBuffers(k, n); },
+           [](GLsizei k, const GLuint* n) { glDeleteBuffers(k, n); }},
+          {"renderbuffers", [](GLuint n) { return glIsRenderbuffer(n); },
+           [](GLsizei k, GLuint* n) { glGenRenderbuffers(k, n); },
+           [](GLsizei k, const GLuint* n) { glDeleteRenderbuffers(k, n); }}};
+}
+
+std::vector<GLuint> liveNames(const GlObjectKind& kind) {
+  GLuint probe = 0;
+  kind.generate(1, &probe);
+  kind.remove(1, &probe);
+  std::vector<GLuint> names;
+  for (GLuint name = 1, end = probe + kNameSpan; name <= end; ++name)
+    if (kind.exists(name) == GL_TRUE) {
+      names.push_back(name);
+      end = std::max(end, name + kNameSpan);
+    }
+  return names;
+}
+
+// Live names of each kind, in glObjectKinds() order, sorted.
+using GlNames = std::vector<std::vector<GLuint>>;
+GlNames liveGlObjects() {
+  GlNames names;
+  for (const auto& kind : glObjectKinds()) names.push_back(liveNames(kind));
+  return names;
+}
+
+// What `after` holds that `before` did not ("130 textures (first name 57)"), empty if nothing.
+std::string newGlObjects(const GlNames& before, const GlNames& after) {
+  const auto kinds = glObjectKinds();
+  std::string text;
+  for (std::size_t k = 0; k < kinds.size(); ++k) {
+    std::vector<GLuint> added;
+    std::set_difference(after[k].begin(), after[k].end(), before[k].begin(), before[k].end(), std::back_inserter(added));
+    if (added.empty()) continue;
+    text += (text.empty() ? "" : ", ") + std::to_string(added.size()) + " " + kinds[k].plural + " (first name " +
+            std::to_string(added.front()) + ")";
+  }
+  return text;
+}
 
 }  // namespace
 
@@ -241,26 +331,53 @@ ConformanceCheck checkParameterExtremes(const RegisteredTechnique& technique) {
   for (const bool spot : {true, false}) {
     const Scene scene = conformanceBoxScene(spot);
     FrameRunner runner(scene, conformanceSettings({160, 90}, 128));
-    std::vector<std::pair<std::string, std::string>> cases = {{"", ""}};  // the defaults first
-    for (const auto& spec : technique.info->parameters)
-      for (const auto& value : parameterLimits(spec)) cases.push_back({spec.name, value});
-    for (const auto& [parameter, value] : cases) {
-      const std::string what = (parameter.empty() ? std::string("the defaults") : "--set " + parameter + "=" + value) +
-                               " on " + scene.name;
-      TechniqueRun run;
-      try {
-        run = parameter.empty() ? runWith(runner, technique, {}) : runWith(runner, technique, {{parameter, value}});
-      } catch (const std::exception& error) {
-        return failedCheck(name, what + ": the technique threw: " + error.what());
-      }
+    for (const ExtremeCase& c : extremeCases(technique)) {
+      const std::string what = c.describe(scene);
+      const ConformanceCheck run = guarded(name, [&] {
+        const TechniqueRun result = runCase(runner, technique, c);
+        std::string example;
+        if (const int bad = badReceivers(result.visibility, runner.positions(), example); bad > 0)
+          return failedCheck(name, std::to_string(bad) + " receivers not finite or outside [0, 1], first " + example);
+        return passedCheck(name, "");
+      });
+      if (!run.passed) return failedCheck(name, what + ": " + run.detail);
       ++runs;
-      std::string example;
-      if (const int bad = badReceivers(run.visibility, runner.positions(), example); bad > 0)
-        return failedCheck(name, what + ": " + std::to_string(bad) + " receivers not finite or outside [0, 1], first " + example);
     }
   }
   return passedCheck(name, std::to_string(runs) + " runs (defaults and every parameter at each limit, spot and directional)"
                     ": every receiver finite in [0, 1]");
+}
+
+ConformanceCheck checkDeclaredPasses(const RegisteredTechnique& technique) {
+  const char* name = "declared-passes";
+  return guarded(name, [&] {
+    std::set<std::string> ran, declared;
+    int runs = 0;
+    // A pass may run only for some parameter values or lights: every extreme case may be
+    // needed, but the sweep stops once each declared pass has run.
+    for (const bool spot : {true, false}) {
+      const Scene scene = conformanceBoxScene(spot);
+      FrameRunner runner(scene, conformanceSettings({160, 90}, 128));
+      for (const auto& pass : passNamesOn(technique.info->passes, runner.path())) declared.insert(pass);
+      for (const ExtremeCase& c : extremeCases(technique)) {
+        if (std::includes(ran.begin(), ran.end(), declared.begin(), declared.end())) break;
+        const TechniqueRun run = runCase(runner, technique, c);
+        ++runs;
+        ran.insert(run.times.order.begin(), run.times.order.end());
+      }
+    }
+    std::vector<std::string> missing;
+    std::set_difference(declared.begin(), declared.end(), ran.begin(), ran.end(), std::back_inserter(missing));
+    if (!missing.empty()) {
+      std::string names;
+      for (const auto& pass : missing) names += (names.empty() ? "'" : ", '") + pass + "'";
+      return failedCheck(name, "declared pass" + std::string(missing.size() > 1 ? "es " : " ") + names +
+                                   " never ran in " + std::to_string(runs) +
+                                   " runs (defaults and every parameter at each limit, spot and directional)");
+    }
+    return passedCheck(name, "each of the " + std::to_string(declared.size()) + " passes declared for this path ran (" +
+                                 std::to_string(runs) + (runs == 1 ? " run)" : " runs)"));
+  });
 }
 
 ConformanceCheck checkFacing(const RegisteredTechnique& technique, const ParameterSet& parameters) {
@@ -354,6 +471,7 @@ ConformanceCheck checkMemoryLedger(const RegisteredTechnique& technique, const P
     }
     std::uint64_t live = 0;
     nlohmann::json record;
+    const GlNames namesBefore = liveGlObjects();
     {
       TechniqueSession session(runner, technique, parameters);
       const TechniqueRun run = runner.run(session, parameters, true);
@@ -361,6 +479,8 @@ ConformanceCheck checkMemoryLedger(const RegisteredTechnique& technique, const P
       record = makeRecord(run, runner, "");
     }
     const std::uint64_t leaked = GpuMemoryLedger::processBytes() - before;
+    // Objects made with raw GL calls never reach any ledger: only their names show them.
+    const std::string unbooked = newGlObjects(namesBefore, liveGlObjects());
     std::uint64_t split = 0;
     for (const auto& resource : record.value("memory", nlohmann::json::array())) split += resource["bytes"].get<std::uint64_t>();
     const auto booked = record["memory_bytes"].get<std::uint64_t>();
@@ -372,8 +492,10 @@ ConformanceCheck checkMemoryLedger(const RegisteredTechnique& technique, const P
                             std::to_string(booked));
     if (leaked != 0)
       return failedCheck(name, std::to_string(leaked) + " bytes of GL objects outlive the technique's instance");
+    if (!unbooked.empty())
+      return failedCheck(name, "GL objects made outside the ledger outlive the technique's instance: " + unbooked);
     return passedCheck(name, "memory_bytes " + std::to_string(booked) + " = the memory block's sum = the bytes its GL " +
-                          "objects hold, all released with the instance");
+                          "objects hold, all released with the instance (no texture, buffer or renderbuffer outlives it)");
   });
 }
 

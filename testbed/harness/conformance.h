@@ -50,11 +50,17 @@ std::vector<FrustumCase> frustumCases();
 // and memory checks' scene.
 Scene conformanceBoxScene(bool spot);
 
-// The checks. Each needs a current GL context and catches what the technique throws.
+// The checks. Each needs a current GL context and catches what the technique throws,
+// std::exception or not. `testbed conform` runs them in a child process, so that a
+// technique that crashes, exits or hangs fails the check it was in (app/command_conform.cpp).
 ConformanceCheck checkParameterExtremes(const RegisteredTechnique& technique);
+// Each pass declared for the run's path runs at least once over the parameter-extremes runs.
+ConformanceCheck checkDeclaredPasses(const RegisteredTechnique& technique);
 ConformanceCheck checkFacing(const RegisteredTechnique& technique, const ParameterSet& parameters);
 ConformanceCheck checkLightFrustum(const RegisteredTechnique& technique, const ParameterSet& parameters);
 ConformanceCheck checkDeterminism(const RegisteredTechnique& technique, const ParameterSet& parameters);
+// Also: no texture, buffer or renderbuffer made while the instance lived outlives it, whether
+// made through the ledger's objects (gl/objects.h) or with raw GL calls.
 ConformanceCheck checkMemoryLedger(const RegisteredTechnique& technique, const ParameterSet& parameters);
 ConformanceCheck checkBadValuesRefused(const RegisteredTechnique& technique);
 

@@ -156,7 +156,11 @@ std::vector<SequenceOutcome> runFrames(const std::vector<SequenceEntry>& entries
       std::optional<TemporalFrame> temporal, heldFrame;
       if (compare) {
         if (!truth) truth = run.visibility;
-        record.error = computeErrorMetrics(run.visibility, *truth);
+        try {
+          record.error = computeErrorMetrics(run.visibility, *truth);
+        } catch (const std::invalid_argument& e) {
+          throw std::runtime_error(record.technique + " at frame " + std::to_string(frame) + ": " + e.what());
+        }
         temporal.emplace(TemporalFrame{frame, run.visibility, *truth, runner.positions(), viewProjection});
         if (heldPositions) heldFrame.emplace(TemporalFrame{frame, held[e], held.front(), *heldPositions, viewProjection});
       }

@@ -20,13 +20,23 @@ constexpr int kSlots = 64;
 // Every signal whose default action ends the process and that can be caught (signal(7)):
 // a closed pipe (SIGPIPE), Ctrl-\ (SIGQUIT), a batch system's warning or time limit
 // (SIGUSR1, SIGXCPU), a full file-size limit (SIGXFSZ) clean up like Ctrl-C.
-constexpr int kSignals[] = {SIGINT,  SIGTERM, SIGHUP,  SIGQUIT, SIGPIPE,   SIGALRM,
-                            SIGUSR1, SIGUSR2, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF};
+// A fault (a plugin's SIGSEGV, an abort()) cleans up too: the handler uses async-signal-safe
+// calls only and no heap, so it works in a process whose state the fault left broken.
+constexpr int kSignals[] = {SIGINT,  SIGTERM, SIGHUP,  SIGQUIT,   SIGPIPE, SIGALRM, SIGUSR1, SIGUSR2, SIGXCPU,
+                            SIGXFSZ, SIGVTALRM, SIGPROF, SIGSEGV, SIGBUS,  SIGFPE,  SIGILL,  SIGABRT, SIGSYS, SIGTRAP};
+// A fault cannot wait: returning from its handler runs the faulting instruction again.
+bool isFault(int signal) {
+  return signal == SIGSEGV || signal == SIGBUS || signal == SIGFPE || signal == SIGILL || signal == SIGSYS ||
+         signal == SIGTRAP || signal == SIGABRT;
+}
 
 // Paths are strdup'ed so that the handler reads plain C strings; a slot is emptied
 // (exchanged for null) before its string is freed.
 std::atomic<char*> paths[kSlots];
 std::atomic<int> kinds[kSlots];
+// The process whose folders they are: a forked child that dies of a signal (before it execs)
+// inherits the handler and the paths, and must not remove its parent's staging folder.
+std::atomic<pid_t> owner{0};
 
 // While a commit runs the handler only notes the signal; the commit's end delivers it.
 std::atomic<int> deferring{0};
@@ -55,8 +65,19 @@ void emptyFolder(const char* path) {
   ::close(fd);
 }
 
+void dieOf(int signal) {
+  struct sigaction fallback {};
+  fallback.sa_handler = SIG_DFL;
+  ::sigaction(signal, &fallback, nullptr);
+  ::raise(signal);  // blocked in the handler: delivered, with the default action, on return
+}
+
 void onSignal(int signal) {
+  if (::getpid() != owner.load()) return dieOf(signal);
   if (deferring.load() > 0) {
+    // A commit is moving files: emptying the staging folder now could lose the user's old
+    // outputs set aside in it. A fault there leaves the folder, as SIGKILL does.
+    if (isFault(signal)) return dieOf(signal);
     pending.store(signal);
     return;
   }
@@ -84,15 +105,20 @@ void onSignal(int signal) {
     done[longest] = true;
     ::rmdir(paths[longest].load());  // fails, harmlessly, unless empty
   }
-  struct sigaction fallback {};
-  fallback.sa_handler = SIG_DFL;
-  ::sigaction(signal, &fallback, nullptr);
-  ::raise(signal);
+  dieOf(signal);
 }
 
 void installHandlers() {
   static std::once_flag once;
   std::call_once(once, [] {
+    owner.store(::getpid());
+    // A stack overflow's SIGSEGV finds no stack to run the handler on: give this thread
+    // (the one that registers outputs, the main one) a spare.
+    static char spare[64 * 1024];
+    stack_t alternate{};
+    alternate.ss_sp = spare;
+    alternate.ss_size = sizeof spare;
+    ::sigaltstack(&alternate, nullptr);
     for (int signal : kSignals) {
       struct sigaction current {};
       ::sigaction(signal, nullptr, &current);
@@ -101,6 +127,7 @@ void installHandlers() {
       if ((current.sa_flags & SA_SIGINFO) || current.sa_handler != SIG_DFL) continue;
       struct sigaction action {};
       action.sa_handler = onSignal;
+      action.sa_flags = SA_ONSTACK;
       sigemptyset(&action.sa_mask);
       for (int other : kSignals) sigaddset(&action.sa_mask, other);
       ::sigaction(signal, &action, nullptr);

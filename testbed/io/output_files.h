@@ -11,10 +11,11 @@
 //     the staging folder and the new ones into place, putting the old ones back if a rename
 //     fails, so the set lands whole or not at all; a user's other files (sm.json.previous,
 //     sm.json.partial) are never touched;
-//   - an uncommitted set (an error, a signal: interrupt_cleanup.h) removes its staging
-//     folder and the folders it created when they are empty.
-// SIGKILL leaves the staging folder with the files written so far; its name starts with a
-// dot and says what it is, and the outputs from earlier runs stay as they were.
+//   - an uncommitted set (an error, a signal, a crash: interrupt_cleanup.h) removes its
+//     staging folder and the folders it created when they are empty.
+// SIGKILL (or a crash in the middle of a commit) leaves the staging folder with the files
+// written so far; its name starts with a dot and says what it is, and the outputs from
+// earlier runs stay as they were.
 #include <filesystem>
 #include <memory>
 #include <string>

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -28,19 +29,24 @@ void checkShape(const ImageF& image, const char* name) {
                                 " values for " + sizeText(image) + " pixels");
 }
 
-// Every input must be a one-channel image of the ground truth's size, with a value on
-// every receiver: a NaN where the ground truth has a receiver means the technique lost
-// that pixel, which would otherwise silently drop out of every metric.
+// Every input must be a one-channel image of the ground truth's size, with a visibility in
+// [0, 1] on every receiver: a NaN where the ground truth has a receiver means the technique
+// lost that pixel, which would otherwise silently drop out of every metric, and an infinity
+// or a value outside [0, 1] would turn every mean into one that no record can hold.
 void checkInputs(const ImageF& groundTruth, const ImageF& other, const char* name) {
   checkShape(other, name);
   if (other.width != groundTruth.width || other.height != groundTruth.height)
     throw std::invalid_argument(std::string("metrics: ") + name + " is " + sizeText(other) +
                                 " but the ground truth is " + sizeText(groundTruth));
   for (std::size_t i = 0; i < other.pixels.size(); ++i) {
-    if (std::isnan(other.pixels[i]) && !std::isnan(groundTruth.pixels[i])) {
+    const float v = other.pixels[i];
+    if (!(v >= 0.0f && v <= 1.0f) && !std::isnan(groundTruth.pixels[i])) {
       const auto x = i % std::size_t(groundTruth.width), y = i / std::size_t(groundTruth.width);
-      throw std::invalid_argument(std::string("metrics: ") + name + " is NaN at pixel (" + std::to_string(x) +
-                                  ", " + std::to_string(y) + ") where the ground truth has a receiver");
+      std::ostringstream value;
+      value << v;
+      throw std::invalid_argument(std::string("metrics: ") + name + " is " + (std::isnan(v) ? "NaN" : value.str()) +
+                                  " at pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                                  ") where the ground truth has a receiver; visibility must lie in [0, 1]");
     }
   }
 }

@@ -71,8 +71,9 @@ std::optional<const char*> groundTruthFlag(const ErrorMetrics& metrics);
 //   value of exactly 0.5 on a GT-shadow pixel is a mismatch but not a leak.
 //
 // Throws std::invalid_argument when an image is not one channel, the sizes differ, there
-// is no receiver, or the technique (or the reference) is NaN on a receiver pixel (the
-// message names the first such pixel as (x, y), y counted from the top row).
+// is no receiver, or the technique (or the reference) is NaN, infinite or outside [0, 1] on a
+// receiver pixel (the message names the first such pixel as (x, y), y counted from the top
+// row, and its value).
 // The nearest-rank 95th percentile's index in n >= 1 sorted values: ceil(0.95 n) - 1,
 // in integers so that 0.95 * n cannot round up.
 inline std::size_t p95Index(std::size_t n) { return (95 * n + 99) / 100 - 1; }

@@ -1,8 +1,14 @@
 // Techniques with one planted defect each, for tests/conform_test.cpp: `testbed conform`
 // must fail them on the line of the convention they break and pass the others. Each is
 // `sm` (the registry's own instance, so the plugin needs no shader) plus its defect,
-// chosen by the DEFECT_* definition it is compiled with (CMakeLists.txt here).
+// chosen by the DEFECT_* definition it is compiled with (CMakeLists.txt here). The hostile
+// ones take the process down or never return, in every frame, so that every check that
+// renders must name what happened.
+#include <unistd.h>
+
 #include <cmath>
+#include <csignal>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -40,6 +46,28 @@ class DefectTechnique final : public WithParameters<DefectParameters> {
       const float nan = std::numeric_limits<float>::quiet_NaN();
       glClearTexImage(out.texture.id(), 0, GL_RED, GL_FLOAT, &nan);
     }
+#elif defined(DEFECT_VISIBILITY)
+    // A visibility no receiver may have (+inf, 2, -1): `compare` must refuse it as NaN.
+    const float value = DEFECT_VISIBILITY;
+    glClearTexImage(out.texture.id(), 0, GL_RED, GL_FLOAT, &value);
+#elif defined(DEFECT_RAW_TEXTURE_LEAK)
+    // 64 textures a frame made with raw GL (no ledger sees them) and never deleted.
+    GLuint leaked[64];
+    glCreateTextures(GL_TEXTURE_2D, 64, leaked);
+    for (GLuint texture : leaked) glTextureStorage2D(texture, 1, GL_R8, 16, 16);
+#elif defined(DEFECT_EXIT_ZERO)
+    _exit(0);
+#elif defined(DEFECT_SEGFAULT)
+    // A volatile pointer to volatile: the compiler can neither see the null (and trap with
+    // SIGILL instead) nor drop the store.
+    int* volatile nowhere = nullptr;
+    *static_cast<volatile int*>(nowhere) = 1;
+#elif defined(DEFECT_ABORT)
+    std::abort();
+#elif defined(DEFECT_THROW_INT)
+    throw 42;
+#elif defined(DEFECT_INFINITE_LOOP)
+    for (;;) ::pause();  // asleep, not spinning: the test machine's cores are shared
 #elif defined(DEFECT_NONDETERMINISTIC)
     // Dims the frame by how many frames the process has rendered, not by the frame: 0 stays
     // 0 and lit stays above 0.9, so only runs compared with each other can tell.
@@ -58,6 +86,15 @@ class DefectTechnique final : public WithParameters<DefectParameters> {
   Texture hiddenTexture_;
 };
 
+// sm's, whose instance renders them, and with DEFECT_UNRUN_PASS one it never runs.
+std::vector<PassDeclaration> passes() {
+  auto declared = ShadowMapScreenBase::declaredPasses("the depth test per pixel");
+#if defined(DEFECT_UNRUN_PASS)
+  declared.push_back({.name = "never-run", .paperStep = "a pass declared and never timed"});
+#endif
+  return declared;
+}
+
 }  // namespace
 
 TESTBED_PLUGIN(registrar) {
@@ -65,7 +102,6 @@ TESTBED_PLUGIN(registrar) {
                                   .output = OutputKind::Hard,
                                   .citation = "a test fixture, no paper",
                                   .summary = "sm with one planted defect for `testbed conform`",
-                                  // sm's, whose instance renders it
-                                  .passes = ShadowMapScreenBase::declaredPasses("the depth test per pixel"),
+                                  .passes = passes(),
                                   .resources = ShadowMapScreenBase::declaredResources()});
 }
