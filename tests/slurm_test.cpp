@@ -92,7 +92,7 @@ TEST(Slurm, CorpusSweepKilledShardResumesAndMergesAsAnUninterruptedRun) {
 
   const LocalCluster cluster{tmp / "cluster"};
   const RunResult start = runCommand({(kSlurmScripts / "local_cluster.sh").string(), "start", cluster.dir.string()},
-                                     {.timeoutSeconds = 60});
+                                     {.timeoutSeconds = 120});
   ASSERT_EQ(start.exitCode, 0) << start.describe() << "\n" << readFile(cluster.dir / "slurmctld.log")
                                << readFile(cluster.dir / "slurmd.log");
   // The job array's tasks see the submitter's environment: the gate's folder, and a time
