@@ -123,7 +123,8 @@ TEST(CliMerge, ShardsJoinIntoTheWholeRunsCellsAndMismatchesAreRefused) {
                                 (tmp / ("shard" + std::string(1, shard[0]))).string()});
     ASSERT_EQ(run.exitCode, 0) << run.describe();
   }
-  const RunResult whole = runTestbed({"sweep", "--spec", spec, "--no-plot", "--out", (tmp / "whole").string()});
+  const RunResult whole =
+      runTestbed({"sweep", "--spec", spec, "--plugin", TESTBED_GATE_PLUGIN, "--no-plot", "--out", (tmp / "whole").string()});
   ASSERT_EQ(whole.exitCode, 0) << whole.describe();
   const RunResult merged = runTestbed({"merge", "--no-plot", "--out", (tmp / "merged").string(), (tmp / "shard1").string(),
                                  (tmp / "shard2").string()});
@@ -274,15 +275,21 @@ TEST(CliSweep, BadStudiesNameTheFieldAndWriteNothing) {
 // an edited one runs again) and ends with the records of an uninterrupted run.
 TEST(CliSweep, AKilledSweepResumesWhereItStopped) {
   TempDir tmp("sweep-resume");
-  writeFile(tmp / "study.json", studySpec(sceneFolder(tmp / "scenes")).dump());
+  json study = studySpec(sceneFolder(tmp / "scenes"));
+  study["techniques"].push_back("test-gate");
+  writeFile(tmp / "study.json", study.dump());
   const std::string spec = (tmp / "study.json").string(), out = (tmp / "out").string();
-  // Killed (SIGTERM, as Slurm's scancel) once its third cell is on disk.
-  const std::string script = "\"$0\" sweep --spec \"$1\" --no-plot --out \"$2\" 2>\"$2.log\" & pid=$!; "
-                             "until [ \"$(ls \"$2/.testbed-resume\" 2>/dev/null | grep -c '^cell-.*json$')\" -ge 3 ]; do "
-                             "kill -0 $pid 2>/dev/null || exit 3; sleep 0.05; done; kill -TERM $pid; wait $pid; exit 0";
-  const RunResult killed = runCommand({"sh", "-c", script, TESTBED_BINARY, spec, out});
+  // Killed (SIGTERM, as Slurm's scancel) while it waits at the gate of its first test-gate
+  // cell (tests/gate_plugin): the cells before it are on disk, the rest are not.
+  SweepGate gate(tmp / "gate", "gate");
+  const std::string script = "\"$0\" sweep --spec \"$1\" --plugin \"$3\" --no-plot --out \"$2\" 2>\"$2.log\" & pid=$!; "
+                             "until [ -e \"$4\" ]; do kill -0 $pid 2>/dev/null || exit 3; sleep 0.05; done; "
+                             "kill -TERM $pid; wait $pid; exit 0";
+  const RunResult killed = runCommand({"sh", "-c", script, TESTBED_BINARY, spec, out, TESTBED_GATE_PLUGIN, gate.reached().string()},
+                                      {.env = {{"TESTBED_TEST_GATE", (tmp / "gate").string()}}});
   ASSERT_EQ(killed.exitCode, 0) << killed.describe() << readFile(out + ".log");
-  ASSERT_FALSE(fs::exists(tmp / "out" / "records.json")) << "the sweep finished before it was killed";
+  ASSERT_FALSE(fs::exists(tmp / "out" / "records.json")) << "the sweep went past the gate";
+  gate.open();
   // One finished cell edited: it must run again, not be trusted.
   std::vector<fs::path> cells;
   for (const auto& entry : fs::directory_iterator(tmp / "out" / ".testbed-resume"))
@@ -293,11 +300,12 @@ TEST(CliSweep, AKilledSweepResumesWhereItStopped) {
   edited["record"]["shadow_map"] = 4096;
   writeFile(cells.back(), edited.dump());
 
-  const RunResult resumed = runTestbed({"sweep", "--spec", spec, "--no-plot", "--out", out});
+  const RunResult resumed = runTestbed({"sweep", "--spec", spec, "--plugin", TESTBED_GATE_PLUGIN, "--no-plot", "--out", out});
   ASSERT_EQ(resumed.exitCode, 0) << resumed.describe();
   EXPECT_NE(resumed.err.find("sweep: resuming: " + std::to_string(cells.size() - 1) + " cells"), std::string::npos) << resumed.err;
   EXPECT_NE(resumed.err.find(cells.back().filename().string() + ": record.shadow_map: 4096"), std::string::npos) << resumed.err;
-  const RunResult whole = runTestbed({"sweep", "--spec", spec, "--no-plot", "--out", (tmp / "whole").string()});
+  const RunResult whole =
+      runTestbed({"sweep", "--spec", spec, "--plugin", TESTBED_GATE_PLUGIN, "--no-plot", "--out", (tmp / "whole").string()});
   ASSERT_EQ(whole.exitCode, 0) << whole.describe();
   const json a = json::parse(readFile(tmp / "out" / "records.json")), b = json::parse(readFile(tmp / "whole" / "records.json"));
   EXPECT_EQ(cellsOf(a), cellsOf(b));
@@ -305,9 +313,9 @@ TEST(CliSweep, AKilledSweepResumesWhereItStopped) {
   EXPECT_FALSE(fs::exists(tmp / "out" / ".testbed-resume"));
   // Run once more: every record is there and valid; only the close-up figure's cells (the
   // first column, bunny at 32²), whose images a whole run does not keep, render again.
-  const RunResult again = runTestbed({"sweep", "--spec", spec, "--no-plot", "--out", out});
+  const RunResult again = runTestbed({"sweep", "--spec", spec, "--plugin", TESTBED_GATE_PLUGIN, "--no-plot", "--out", out});
   ASSERT_EQ(again.exitCode, 0) << again.describe();
-  EXPECT_NE(again.err.find("sweep: resuming: " + std::to_string(b.size() - 3) + " cells"), std::string::npos) << again.err;
+  EXPECT_NE(again.err.find("sweep: resuming: " + std::to_string(b.size() - 4) + " cells"), std::string::npos) << again.err;
   EXPECT_EQ(again.err.find("on wall"), std::string::npos) << again.err;
 }
 

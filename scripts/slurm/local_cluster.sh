@@ -75,8 +75,9 @@ munged --socket="$dir/munge/munge.socket" --key-file="$dir/munge/munge.key" --pi
   --log-file="$dir/munged.log" --seed-file="$dir/munge/munged.seed" --force
 slurmctld -f "$SLURM_CONF"
 slurmd -f "$SLURM_CONF"
-# Up when the node accepts jobs (idle), within a bounded time.
-for _ in $(seq 100); do
+# Up when the node accepts jobs (idle). The bound (60 s) only stops a cluster that never comes
+# up; a loaded machine's daemons may take many seconds.
+for _ in $(seq 300); do
   if sinfo -h -N -o '%t' 2>/dev/null | grep -q '^idle'; then echo "export SLURM_CONF=$SLURM_CONF"; exit 0; fi
   sleep 0.2
 done

@@ -22,7 +22,16 @@ export TESTBED_BINARY="${TESTBED_BINARY:-${TESTBED_BUILD_DIR:-$repo/build}/testb
 array=$(sbatch --parsable ${SBATCH_OPTIONS:-} --array="1-$n" --output="$out/logs/shard-%a.log" \
   "$here/sweep.sbatch" "$spec" "$out" "$@")
 array="${array%%;*}"
+# The merge reads the spec again, so it loads the shards' plugins (a plugin's techniques).
+plugins=()
+options=("$@")
+for ((i = 0; i < ${#options[@]}; i++)); do
+  case "${options[i]}" in
+    --plugin) plugins+=("--plugin=${options[i + 1]:-}"); i=$((i + 1)) ;;
+    --plugin=*) plugins+=("${options[i]}") ;;
+  esac
+done
 # shellcheck disable=SC2086
 merge=$(sbatch --parsable ${SBATCH_OPTIONS:-} --dependency="afterok:$array" --kill-on-invalid-dep=yes \
-  --output="$out/logs/merge.log" "$here/merge.sbatch" "$out" "$n")
+  --output="$out/logs/merge.log" "$here/merge.sbatch" "$out" "$n" ${plugins[@]+"${plugins[@]}"})
 echo "$array ${merge%%;*}"
