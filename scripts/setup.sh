@@ -2,11 +2,13 @@
 # Prepares a Debian 12 machine for the testbed, idempotently:
 #   1. installs the Debian packages the build needs (apt-get; sudo when not root),
 #   2. extracts the asset meshes from Debian's libcgal-demo data into assets/,
-#   3. configures and builds (Release) into build/.
+#   3. configures and builds (Release) into build/,
+#   4. builds the libFuzzer harnesses with clang into build-fuzz/ (their smoke run is in the suite).
 # Every step is skipped when it is already done, so the README commands stay cheap.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${TESTBED_BUILD_DIR:-$repo/build}"
+fuzz_dir="${TESTBED_FUZZ_BUILD_DIR:-$repo/build-fuzz}"
 asset_dir="$repo/assets"
 
 packages=(
@@ -18,6 +20,7 @@ packages=(
   libimgui-dev libglx-mesa0 libgl1-mesa-dri xvfb
   python3-matplotlib python3-scipy slurm-wlm munge ffmpeg
   chromium chromium-driver python3-selenium glslang-tools glslang-dev
+  clang libclang-rt-dev
 )
 
 log() { echo "setup: $*" >&2; }
@@ -81,6 +84,24 @@ build() {
   return "$status"
 }
 
+# The fuzz harnesses compile only their parsers' sources, with clang, libFuzzer and the
+# sanitizers (fuzz/CMakeLists.txt), so this build is small; the suite runs their smoke run.
+build_fuzzers() {
+  if [ ! -f "$fuzz_dir/build.ninja" ]; then
+    log "configuring $fuzz_dir"
+    CC=clang CXX=clang++ cmake -S "$repo" -B "$fuzz_dir" -G Ninja -DTESTBED_WITH_FUZZERS=ON \
+      -DTESTBED_WITH_TESTS=OFF -DTESTBED_WITH_BENCHMARKS=OFF -DTESTBED_WITH_VIEWER=OFF \
+      -DTESTBED_WITH_EMBREE=OFF >/dev/null
+  fi
+  log "building $fuzz_dir"
+  set +o pipefail
+  cmake --build "$fuzz_dir" --target fuzzers -- -j"$(nproc)" 2>&1 | { grep -vE '^\[[0-9]+/[0-9]+\] |^ninja: no work' || true; }
+  local status=${PIPESTATUS[0]}
+  set -o pipefail
+  return "$status"
+}
+
 install_packages
 extract_assets
 build
+build_fuzzers
