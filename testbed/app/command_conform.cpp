@@ -31,6 +31,7 @@
 #include "testbed/core/error.h"
 #include "testbed/core/messages.h"
 #include "testbed/gl/context.h"
+#include "groundtruth/shadow_volumes.h"
 #include "testbed/harness/conformance.h"
 #ifdef TESTBED_WITH_VIEWER
 #include "testbed/viewer/live_view.h"
@@ -99,6 +100,8 @@ constexpr NamedCheck kChecks[] = {
     {"determinism", [](const CheckInputs& in) { return checkDeterminism(in.technique, in.parameters); }},
     {"memory-ledger", [](const CheckInputs& in) { return checkMemoryLedger(in.technique, in.parameters); }},
     {"bad-set-refused", [](const CheckInputs& in) { return checkBadValuesRefused(in.technique); }},
+    {"stability",
+     [](const CheckInputs& in) { return checkStability(in.technique, in.parameters, shadowVolumeGroundTruth()); }},
 };
 
 // The descriptor a check's process writes its verdict to; its stdout and stderr stay the
