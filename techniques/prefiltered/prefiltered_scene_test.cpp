@@ -5,6 +5,7 @@
 // The tables printed are the figures the reports quote.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -37,8 +38,9 @@ struct Figures {
 // threshold), which moves nothing but the technique's values.
 double leakAbove(const ImageF& visibility, const ImageF& truth, float threshold) {
   ImageF shifted = visibility;
+  // Clamped: the metrics refuse visibility above 1, and a lit receiver stays lit.
   for (float& v : shifted.pixels)
-    if (!std::isnan(v)) v += 0.5f - threshold;
+    if (!std::isnan(v)) v = std::min(1.0f, v + 0.5f - threshold);
   return computeErrorMetrics(shifted, truth).leakPct;
 }
 
