@@ -1,6 +1,7 @@
 #pragma once
-// Stability across arithmetic (docs/conformance.md, "stability"): a technique's visibility
-// where no shadow boundary is near must not depend on how its arithmetic was carried out.
+// Stability across arithmetic (docs/conformance.md, "Stability across arithmetic"): a
+// technique's visibility where no shadow boundary is near must not depend on how its
+// arithmetic was carried out.
 // The same frame is rendered three ways and compared receiver by receiver:
 //  - as is, on the compiler path the process runs (TESTBED_SHADER_PATH, gl/shader_path.h);
 //  - on the other compiler path (GLSL <-> SPIR-V): the same source through another
