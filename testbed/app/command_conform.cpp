@@ -7,7 +7,7 @@
 // to file descriptor 3 as it is known. A technique that crashes, calls exit or loops forever
 // (past --check-timeout) fails the check it was in, named with what happened, and the next
 // check starts in a fresh process; while checks return, one process runs them all (a
-// process per check would start a GL context and compile the shaders eight times).
+// process per check would start a GL context and compile the shaders nine times).
 // Re-executing rather than forking keeps the child clear of this process's GL context: a
 // fork of a process holding a Mesa context is not safe to render in.
 #include <fcntl.h>
