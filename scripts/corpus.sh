@@ -88,9 +88,13 @@ if isinstance(scenes, dict):
 json.dump(spec, open(path, "w"), indent=1, sort_keys=True)
 open(path, "a").write("\n")
 PY
-# The command as bash reads it back (each word quoted with %q): pasted, it runs this again.
+# The command as bash reads it back (each word quoted with %q): pasted in the repository's
+# root, it runs this again. An --out inside the repository is written relative to that root,
+# so the committed command names no machine's folder.
+recorded_out="$out"
+[[ "$out" == "$repo"/* ]] && recorded_out="${out#"$repo"/}"
 printf -v recorded ' %q' --seed "$seed" --count "$count" --techniques "$techniques" --shadow-maps "$maps" \
-  --stats-map "$stats_map" --out "$out"
+  --stats-map "$stats_map" --out "$recorded_out"
 if [ ${#extra[@]} -gt 0 ]; then printf -v more ' %q' -- "${extra[@]}"; recorded+="$more"; fi
 {
   echo "scripts/corpus.sh$recorded"

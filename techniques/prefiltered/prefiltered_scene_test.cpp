@@ -5,7 +5,6 @@
 // The tables printed are the figures the reports quote.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -37,11 +36,12 @@ struct Figures {
 // boundaries) with v > 0.5. The same count with v > threshold: the metric on v + (0.5 −
 // threshold), which moves nothing but the technique's values.
 double leakAbove(const ImageF& visibility, const ImageF& truth, float threshold) {
-  ImageF shifted = visibility;
-  // Clamped: the metrics refuse visibility above 1, and a lit receiver stays lit.
-  for (float& v : shifted.pixels)
-    if (!std::isnan(v)) v = std::min(1.0f, v + 0.5f - threshold);
-  return computeErrorMetrics(shifted, truth).leakPct;
+  // leak_pct counts v > 0.5; mapping v > threshold to 1 and the rest to 0 moves its
+  // threshold while keeping every value in [0, 1], which the metrics require.
+  ImageF crossed = visibility;
+  for (float& v : crossed.pixels)
+    if (!std::isnan(v)) v = v > threshold ? 1.0f : 0.0f;
+  return computeErrorMetrics(crossed, truth).leakPct;
 }
 
 const std::vector<std::string> kCompared{"sm", "vsm", "esm", "evsm", "msm"};

@@ -1,10 +1,10 @@
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <string_view>
 
 #include "testbed/app/commands.h"
 #include "testbed/core/error.h"
+#include "testbed/core/number_text.h"
 #include "testbed/core/messages.h"
 #include "testbed/harness/sequence.h"
 
@@ -120,26 +120,19 @@ std::string commandLine(const CLI::App& command) {
 }
 
 std::uint64_t parseInteger(const std::string& option, const std::string& text, std::uint64_t lo, std::uint64_t hi) {
-  std::uint64_t value = 0;
-  const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, value);
-  if (text.empty() || error != std::errc() || stop != end || value < lo || value > hi)
+  const auto value = wholeNumber<std::uint64_t>(text);
+  if (!value || *value < lo || *value > hi)
     throw InputError(option + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" +
                      oneLine(text) + "'");
-  return value;
+  return *value;
 }
 
 glm::ivec2 parseSize(const std::string& text) {
   const auto x = text.find('x');
-  auto parse = [&](std::string_view part, int& value) {
-    const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
-    return ec == std::errc() && end == part.data() + part.size() && !part.empty();
-  };
-  glm::ivec2 size{0, 0};
-  if (x == std::string::npos || !parse(std::string_view(text).substr(0, x), size.x) ||
-      !parse(std::string_view(text).substr(x + 1), size.y))
-    throw InputError("--size: expected WxH such as 1280x720, got '" + text + "'");
-  return size;
+  const auto width = wholeNumber<int>(std::string_view(text).substr(0, x));
+  const auto height = x == std::string::npos ? std::nullopt : wholeNumber<int>(std::string_view(text).substr(x + 1));
+  if (!width || !height) throw InputError("--size: expected WxH such as 1280x720, got '" + text + "'");
+  return {*width, *height};
 }
 
 RenderSettings CommonOptions::settings() const {

@@ -1,6 +1,5 @@
 #include "testbed/harness/sequence.h"
 
-#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -9,14 +8,16 @@
 
 #include "testbed/core/error.h"
 #include "testbed/core/messages.h"
+#include "testbed/core/number_text.h"
 #include "testbed/harness/metric_table.h"
 
 namespace testbed {
 namespace {
 
 bool parseInt(std::string_view text, int& value) {
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  return !text.empty() && ec == std::errc() && end == text.data() + text.size();
+  const auto number = wholeNumber<int>(text);
+  if (number) value = *number;
+  return number.has_value();
 }
 
 }  // namespace

@@ -1,12 +1,12 @@
 #include "testbed/technique/parameters.h"
 
-#include <charconv>
 #include <cmath>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "testbed/core/error.h"
+#include "testbed/core/number_text.h"
 
 namespace testbed {
 
@@ -143,10 +143,9 @@ ParameterValue parseValue(const ParameterSpec& spec, const std::string& text, co
       if (text == "false" || text == "0" || text == "off") return false;
       throw fail("expected true or false");
     case ParameterType::Int: {
-      std::int64_t value = 0;
-      const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-      if (ec != std::errc() || end != text.data() + text.size() || text.empty())
-        throw fail("expected an integer");
+      const auto number = wholeNumber<std::int64_t>(text);
+      if (!number) throw fail("expected an integer");
+      const std::int64_t value = *number;
       if (double(value) < spec.min || double(value) > spec.max)
         throw fail("out of range [" + formatValue(std::int64_t(spec.min)) + ", " +
                    formatValue(std::int64_t(spec.max)) + "]");
@@ -154,10 +153,9 @@ ParameterValue parseValue(const ParameterSpec& spec, const std::string& text, co
       return value;
     }
     case ParameterType::Float: {
-      double value = 0;
-      const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-      if (ec != std::errc() || end != text.data() + text.size() || text.empty())
-        throw fail("expected a number");
+      const auto number = wholeNumber<double>(text);
+      if (!number) throw fail("expected a number");
+      const double value = *number;
       if (!std::isfinite(value)) throw fail("not a finite number");
       if (value < spec.min || value > spec.max)
         throw fail("out of range [" + formatValue(spec.min) + ", " + formatValue(spec.max) + "]");

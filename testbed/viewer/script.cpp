@@ -1,12 +1,12 @@
 #include "testbed/viewer/script.h"
 
-#include <charconv>
 #include <cmath>
 #include <map>
 #include <sstream>
 
 #include "testbed/harness/frame_runner.h"
 #include "testbed/core/error.h"
+#include "testbed/core/number_text.h"
 #include "testbed/io/input_file.h"
 #include "testbed/scene/camera_check.h"
 #include "testbed/technique/registry.h"
@@ -44,20 +44,17 @@ std::string verbList() {
 }
 
 float number(const std::string& word, const std::string& what) {
-  float value = 0;
-  const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
-  if (ec != std::errc() || end != word.data() + word.size() || !std::isfinite(value))
-    throw InputError(what + ": expected a finite number, got '" + word + "'");
-  return value;
+  const auto value = wholeNumber<float>(word);
+  if (!value || !std::isfinite(*value)) throw InputError(what + ": expected a finite number, got '" + word + "'");
+  return *value;
 }
 
 int integer(const std::string& word, int lo, int hi, const std::string& what) {
-  int value = 0;
-  const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
-  if (ec != std::errc() || end != word.data() + word.size() || value < lo || value > hi)
+  const auto value = wholeNumber<int>(word);
+  if (!value || *value < lo || *value > hi)
     throw InputError(what + ": expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi) +
                      ", got '" + word + "'");
-  return value;
+  return *value;
 }
 
 // Follows the technique and its assignments through the script, so a `set` line is
