@@ -152,11 +152,22 @@ float msmHamburger(vec4 moments, float t, float alpha) {
   return 1.0 - clamp(g, 0.0, 1.0);
 }
 
-// MSM with 32-bit floats: the plain moments. p = (moment_bias, -, -, -).
+// The receiver's depth moved towards the light by the depth bias. Where a texel's filter
+// saw one depth z (a lit surface, its own occluder), t ≈ z up to interpolation rounding,
+// and there the bound falls from 1 (t ≤ z) towards 0 over a width set by α: t lies on the
+// steepest part of the solve, where an ulp of t or of the moments moves the visibility
+// anywhere in [0, 1] (dark specks on lit surfaces, and different ones per compiler). Moved
+// in front of z by more than the moments' rounding, t reads 1 whatever the rounding.
+float msmBiasedDepth(float t, float depthBias) { return t - depthBias; }
+
+// MSM with 32-bit floats: the plain moments. p = (moment_bias, depth_bias, -, -).
 vec4 encodeMsm32(float z, vec4 p) { return msmPowers(z); }
-float visibilityMsm32(vec4 m, float t, vec4 p) { return msmHamburger(m, t, p.x); }
+float visibilityMsm32(vec4 m, float t, vec4 p) { return msmHamburger(m, msmBiasedDepth(t, p.y), p.x); }
 
 // MSM with 16-bit UNORM and the optimized quantization (filtering commutes with the affine
-// map, so the blurred texels dequantize to the blurred moments).
+// map, so the blurred texels dequantize to the blurred moments; so does the bias, a convex
+// combination: mixing before or after dequantizing differs only by float rounding).
 vec4 encodeMsm16(float z, vec4 p) { return msmQuantize(msmPowers(z)); }
-float visibilityMsm16(vec4 m, float t, vec4 p) { return msmHamburger(msmDequantize(m), t, p.x); }
+float visibilityMsm16(vec4 m, float t, vec4 p) {
+  return msmHamburger(msmDequantize(m), msmBiasedDepth(t, p.y), p.x);
+}

@@ -34,7 +34,8 @@ TEST(PrefilteredParameters, FourFilteredPluginsShareTheBlurParameters) {
   EXPECT_EQ(resolve("evsm", {}).getFloat("positive_exponent"), 40.0);
   EXPECT_EQ(resolve("evsm", {}).getFloat("negative_exponent"), 5.0);
   EXPECT_EQ(resolve("msm", {}).getChoice("storage"), "16");
-  EXPECT_EQ(resolve("msm", {}).getFloat("moment_bias"), 3e-5);
+  EXPECT_EQ(resolve("msm", {}).getFloat("moment_bias"), 1e-4);
+  EXPECT_EQ(resolve("msm", {}).getFloat("depth_bias"), 5e-5);
   EXPECT_EQ(resolve("vsm", {}).getFloat("bleed_reduction"), 0.0);
 }
 

@@ -7,7 +7,7 @@
 // to file descriptor 3 as it is known. A technique that crashes, calls exit or loops forever
 // (past --check-timeout) fails the check it was in, named with what happened, and the next
 // check starts in a fresh process; while checks return, one process runs them all (a
-// process per check would start a GL context and compile the shaders eight times).
+// process per check would start a GL context and compile the shaders nine times).
 // Re-executing rather than forking keeps the child clear of this process's GL context: a
 // fork of a process holding a Mesa context is not safe to render in.
 #include <fcntl.h>
@@ -31,6 +31,7 @@
 #include "testbed/core/error.h"
 #include "testbed/core/messages.h"
 #include "testbed/gl/context.h"
+#include "groundtruth/shadow_volumes.h"
 #include "testbed/harness/conformance.h"
 #ifdef TESTBED_WITH_VIEWER
 #include "testbed/viewer/live_view.h"
@@ -99,6 +100,8 @@ constexpr NamedCheck kChecks[] = {
     {"determinism", [](const CheckInputs& in) { return checkDeterminism(in.technique, in.parameters); }},
     {"memory-ledger", [](const CheckInputs& in) { return checkMemoryLedger(in.technique, in.parameters); }},
     {"bad-set-refused", [](const CheckInputs& in) { return checkBadValuesRefused(in.technique); }},
+    {"stability",
+     [](const CheckInputs& in) { return checkStability(in.technique, in.parameters, shadowVolumeGroundTruth()); }},
 };
 
 // The descriptor a check's process writes its verdict to; its stdout and stderr stay the

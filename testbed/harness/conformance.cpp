@@ -14,6 +14,7 @@
 #include "testbed/core/error.h"
 #include "testbed/gl/render_target.h"
 #include "testbed/harness/record.h"
+#include "testbed/harness/stability.h"
 #include "testbed/scene/primitives.h"
 #include "testbed/technique/declaration.h"
 
@@ -518,6 +519,28 @@ ConformanceCheck checkBadValuesRefused(const RegisteredTechnique& technique) {
       if (!refuses(spec.name, value)) return failedCheck(name, "--set " + spec.name + "=" + value + " was accepted");
   return passedCheck(name, std::to_string(refused) + " bad --set values refused (unknown name, out of range, not a number, " +
                         "NaN, even for odd-only, not a choice)");
+}
+
+ConformanceCheck checkStability(const RegisteredTechnique& technique, const ParameterSet& parameters,
+                                const RegisteredTechnique& truth) {
+  const char* name = "stability";
+  return guarded(name, [&] {
+    int judged = 0;
+    for (const bool spot : {true, false}) {
+      const Scene scene = conformanceBoxScene(spot);
+      const StabilityReport report =
+          measureStability(scene, conformanceSettings({320, 180}, 256), technique, parameters, truth);
+      if (report.changed() > 0 || report.flipped() > 0)
+        return failedCheck(name, scene.name + ": " + report.summary());
+      for (const auto& count : report.counts) judged += count.judged;
+    }
+    const StabilityOptions limits;
+    return passedCheck(name, std::to_string(judged) + " judgements of receivers " + valueText(float(limits.farPx)) +
+                                 " px or more from the ground truth's boundary (box over floor, spot and directional): "
+                                 "none changed by more than " + valueText(float(limits.changeLimit)) +
+                                 " with the other shader path or the light moved by " + std::to_string(limits.ulps) +
+                                 " ulps");
+  });
 }
 
 }  // namespace testbed

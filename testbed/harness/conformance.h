@@ -63,6 +63,12 @@ ConformanceCheck checkDeterminism(const RegisteredTechnique& technique, const Pa
 // made through the ledger's objects (gl/objects.h) or with raw GL calls.
 ConformanceCheck checkMemoryLedger(const RegisteredTechnique& technique, const ParameterSet& parameters);
 ConformanceCheck checkBadValuesRefused(const RegisteredTechnique& technique);
+// Stability across arithmetic (harness/stability.h) on the box over the floor, spot- and
+// directional-lit: no receiver 3 px or more from a boundary of `truth` (the shadow-volume
+// ground truth) changes by more than 0.01 or flips across 0.5 when the compiler path
+// changes or the light moves by 4 float ulps.
+ConformanceCheck checkStability(const RegisteredTechnique& technique, const ParameterSet& parameters,
+                                const RegisteredTechnique& truth);
 
 // The frame sizes of the checks: tiny, so that the suite takes seconds on a CPU rasterizer.
 RenderSettings conformanceSettings(glm::ivec2 size, int mapSize);
