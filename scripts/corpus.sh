@@ -122,9 +122,13 @@ if isinstance(scenes, dict):
 json.dump(spec, open(path, "w"), indent=1, sort_keys=True)
 open(path, "a").write("\n")
 PY
-# The command as bash reads it back (each word quoted with %q): pasted, it runs this again.
+# The command as bash reads it back (each word quoted with %q): pasted at the repository's
+# root, it runs this again; an --out inside the repository is named relative to it, so the
+# committed file names no machine's folder.
+recorded_out="$out"
+case "$out" in "$repo"/*) recorded_out="${out#"$repo"/}" ;; esac
 printf -v recorded ' %q' --seed "$seed" --count "$count" --techniques "$techniques" --shadow-maps "$maps" \
-  --stats-map "$stats_map" --reference "$reference" --out "$out"
+  --stats-map "$stats_map" --reference "$reference" --out "$recorded_out"
 [ -z "$area_samples" ] || recorded+=" --area-samples $area_samples"
 [ -z "$light_radius" ] || { printf -v more ' %q' --light-radius "$light_radius"; recorded+="$more"; }
 if [ ${#extra[@]} -gt 0 ]; then printf -v more ' %q' -- "${extra[@]}"; recorded+="$more"; fi

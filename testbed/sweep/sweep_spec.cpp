@@ -265,6 +265,9 @@ void checkAreaLight(const SweepSpec& spec, const json& document, const SpecReade
   if (measured && measured->reference == MetricReference::Soft && reference == SweepReference::Hard)
     r.fail("measure", "\"" + spec.measure.name + "\" is measured against the area-light reference, which settings.reference "
                       "\"hard\" does not render");
+  if (measured && measured->reference == MetricReference::Soft && document.contains("frames"))
+    r.fail("measure", "\"" + spec.measure.name + "\" is measured against the area-light reference, which a spec over "
+                      "\"frames\" does not render (sequences are compared with the hard ground truth)");
   if (document.contains("frames") && spec.area.refusesNoRadius())
     r.fail("settings.reference", std::string(sweepReferenceName(reference)) +
                                      ": not available with \"frames\" (sequences are compared with the hard ground truth)");
