@@ -99,12 +99,15 @@ void applyAreaLight(const SweepSpec& spec, const std::string& sceneId, const std
 }
 
 // The area-light reference of the runner's frame: the mean of `samples` point-light
-// ground truths over the light's disk (groundtruth/shadow_volumes.h).
+// ground truths over the light's disk (groundtruth/shadow_volumes.h). Rendered once: it is
+// timed by no table, so neither a warm-up frame nor the spec's repeats (each costs
+// `samples` shadow-volume renders).
 ImageF renderAreaReference(FrameRunner& runner, int samples) {
   const auto& reference = areaLightReference();
-  return runner
-      .run(reference, resolveParameters("area", reference.info->parameters, {{"area_samples", std::to_string(samples)}}))
-      .visibility;
+  TechniqueSession session(runner, reference,
+                           resolveParameters("area", reference.info->parameters, {{"area_samples", std::to_string(samples)}}));
+  session.renderFrame();
+  return session.visibility();
 }
 
 }  // namespace
