@@ -163,21 +163,69 @@ class EmbreeScene {
   std::string message_;
 };
 
+// The area light's point samples as docs/ground-truth-and-metrics.md "Area-light
+// reference" states them, written again from that text rather than shared with the
+// shadow volumes' code, so that the cross-check tests the sampling too: Vogel's spiral,
+// sample k of N at radius sqrt((k + 1/2) / N) and angle k × the golden angle on a unit
+// disk with axes u = normalize(axis × stableUp(axis)), v = axis × u; a spot light's sample
+// sits at eye + radius × offset, a directional one travels along
+// normalize(axis + tan(radius°) × offset). Each keeps the central light's frustum (for
+// the frustum rule) and has its own position or direction (for the facing rule and its ray).
+std::vector<LightTransforms> areaSamples(const LightTransforms& light, float radius, int count) {
+  if (count <= 0) return {light};
+  const glm::vec3 axis = light.direction;
+  const glm::vec3 u = glm::normalize(glm::cross(axis, stableUp(axis)));
+  const glm::vec3 v = glm::cross(axis, u);
+  std::vector<LightTransforms> samples(std::size_t(count), light);
+  for (int k = 0; k < count; ++k) {
+    const float r = std::sqrt((float(k) + 0.5f) / float(count));
+    const float angle = 2.39996323f * float(k);
+    const glm::vec3 offset = r * (std::cos(angle) * u + std::sin(angle) * v);
+    if (light.orthographic)
+      samples[std::size_t(k)].direction = glm::normalize(axis + std::tan(glm::radians(radius)) * offset);
+    else
+      samples[std::size_t(k)].position = light.position + radius * offset;
+  }
+  return samples;
+}
+
 class RayCast final : public ShadowTechnique {
  public:
+  explicit RayCast(bool area) : area_(area) {}
+
+  struct AreaParameters {
+    int samples;
+    void reflect(ParameterBinder& b) {
+      b.integer("area_samples", samples, 64, 1, 4096, "point-light samples over the light's disk, one ray each");
+    }
+  };
+
   static TechniqueInfo describe() {
     return {.id = "raycast",
             .output = OutputKind::Hard,
             .citation = "Embree shadow rays (Wald et al. 2014)",
             .summary = "exact hard shadows: one Embree occlusion ray per receiver pixel (cross-check)"};
   }
+  static TechniqueInfo describeArea() {
+    return {.id = "raycast-area",
+            .output = OutputKind::Filtered,
+            .citation = "Embree shadow rays (Wald et al. 2014) towards each sample of the light's disk",
+            .summary = "the area-light reference by ray casting: one occlusion ray per receiver pixel and light sample "
+                       "(cross-check)",
+            .parameters = declaredParameters<AreaParameters>()};
+  }
 
-  void configure(const ParameterSet&) override {}
+  void configure(const ParameterSet& values) override {
+    AreaParameters area{};
+    if (area_) bindParameters(values, area);
+    samples_ = area_ ? area.samples : 0;
+  }
 
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) override {
     auto scope = timer.scope("raycast");
     glFlush();  // the timer's query starts now on the GPU too, so its interval spans our CPU work
     embree_.update(in.scene);
+    lights_ = areaSamples(in.light, in.scene.light.radius, samples_);
     const int width = in.size.x, height = in.size.y;
     if (in.gbuffer.size() != in.size || out.texture.width() != width || out.texture.height() != height)
       throw GlError("raycast: the G-buffer, the visibility target and the screen differ in size");
@@ -203,7 +251,6 @@ class RayCast final : public ShadowTechnique {
   // Traces rows first, first + stride, ... Every pixel depends on its own inputs alone, so
   // the result does not depend on the number of threads.
   void trace(const FrameInputs& in, int first, int stride) {
-    const LightTransforms& light = in.light;
     // Self-intersection: the receiver lies ON a triangle of the scene, so the ray's first
     // candidate hit is its own surface at t ≈ 0 (± the G-buffer's float rounding). tnear
     // skips hits closer than ε along the ray: the ray keeps the exact line from the
@@ -230,44 +277,57 @@ class RayCast final : public ShadowTechnique {
         if (!(gp[3] > 0.5f)) continue;  // background: not a receiver
         const glm::vec3 p(gp[0], gp[1], gp[2]);
         const glm::vec3 n(normals_[3 * i], normals_[3 * i + 1], normals_[3 * i + 2]);
-        // Same rules, same order of float operations as glsl/receiver.glsl.
-        if (!facesLight(light, p, n)) continue;  // faces away (or nearly edge-on): shadowed
-        if (!insideLightFrustum(light, p)) continue;  // outside the frustum: shadowed
-
-        RTCRay ray;
-        ray.org_x = p.x;
-        ray.org_y = p.y;
-        ray.org_z = p.z;
-        ray.tnear = tnear;
-        ray.time = 0.0f;
-        ray.mask = 0xFFFFFFFFu;
-        ray.id = 0;
-        ray.flags = 0;
-        glm::vec3 direction;
-        if (light.orthographic) {
-          // Directional: everything upstream of the receiver occludes, however far.
-          direction = -light.direction;
-          ray.tfar = std::numeric_limits<float>::infinity();
-        } else {
-          // Spot: only the segment to the light occludes (the shadow volumes, too, extrude
-          // away from the light, never behind it). Stopping a hair short of the light keeps
-          // geometry through the light's own position, an edge-on degenerate case that the
-          // volumes leave out, from counting by rounding.
-          const glm::vec3 toLight = light.position - p;
-          const float distance = glm::length(toLight);
-          direction = toLight / distance;
-          ray.tfar = distance * (1.0f - kFarShrink);
-        }
-        ray.dir_x = direction.x;
-        ray.dir_y = direction.y;
-        ray.dir_z = direction.z;
-        rtcOccluded1(scene, &context, &ray);
-        // rtcOccluded1 sets tfar to −∞ when the ray is blocked.
-        visibility_[i] = ray.tfar >= 0.0f ? 1.0f : 0.0f;
+        int lit = 0;
+        for (const LightTransforms& light : lights_) lit += litBy(light, p, n, tnear, scene, context);
+        // As the shadow volumes' reference: the mean over the samples (1 for a point light).
+        visibility_[i] = float(lit) / float(lights_.size());
       }
     }
   }
 
+  // Whether `light` (the point light or one sample) lights the receiver: the facing rule,
+  // the frustum rule, then one occlusion ray.
+  bool litBy(const LightTransforms& light, const glm::vec3& p, const glm::vec3& n, float tnear, RTCScene scene,
+             RTCIntersectContext& context) const {
+    // Same rules, same order of float operations as glsl/receiver.glsl.
+    if (!facesLight(light, p, n)) return false;  // faces away (or nearly edge-on): shadowed
+    if (!insideLightFrustum(light, p)) return false;  // outside the frustum: shadowed
+
+    RTCRay ray;
+    ray.org_x = p.x;
+    ray.org_y = p.y;
+    ray.org_z = p.z;
+    ray.tnear = tnear;
+    ray.time = 0.0f;
+    ray.mask = 0xFFFFFFFFu;
+    ray.id = 0;
+    ray.flags = 0;
+    glm::vec3 direction;
+    if (light.orthographic) {
+      // Directional: everything upstream of the receiver occludes, however far.
+      direction = -light.direction;
+      ray.tfar = std::numeric_limits<float>::infinity();
+    } else {
+      // Spot: only the segment to the light occludes (the shadow volumes, too, extrude
+      // away from the light, never behind it). Stopping a hair short of the light keeps
+      // geometry through the light's own position, an edge-on degenerate case that the
+      // volumes leave out, from counting by rounding.
+      const glm::vec3 toLight = light.position - p;
+      const float distance = glm::length(toLight);
+      direction = toLight / distance;
+      ray.tfar = distance * (1.0f - kFarShrink);
+    }
+    ray.dir_x = direction.x;
+    ray.dir_y = direction.y;
+    ray.dir_z = direction.z;
+    rtcOccluded1(scene, &context, &ray);
+    // rtcOccluded1 sets tfar to −∞ when the ray is blocked.
+    return ray.tfar >= 0.0f;
+  }
+
+  bool area_;
+  int samples_ = 0;
+  std::vector<LightTransforms> lights_;  // the point light, or the area light's samples
   EmbreeScene embree_;
   std::vector<float> positions_, normals_, visibility_;
 };
@@ -276,7 +336,13 @@ class RayCast final : public ShadowTechnique {
 
 const RegisteredTechnique& rayCastGroundTruth() {
   static const RegisteredTechnique entry{&keepTechniqueInfo(RayCast::describe(), TESTBED_TECHNIQUE_FAMILY),
-                                         [] { return std::make_unique<RayCast>(); }};
+                                         [] { return std::make_unique<RayCast>(false); }};
+  return entry;
+}
+
+const RegisteredTechnique& areaRayCast() {
+  static const RegisteredTechnique entry{&keepTechniqueInfo(RayCast::describeArea(), TESTBED_TECHNIQUE_FAMILY),
+                                         [] { return std::make_unique<RayCast>(true); }};
   return entry;
 }
 

@@ -11,5 +11,10 @@ namespace testbed {
 
 // Not in the technique registry (it is a reference, not a rival): id "raycast".
 const RegisteredTechnique& rayCastGroundTruth();
+// The area-light reference cross-checked the same way (id "raycast-area", parameter
+// `area_samples`): per receiver pixel, one ray towards each of the light's N samples, the
+// mean of the N answers; the samples as docs/ground-truth-and-metrics.md states them
+// (groundtruth/area_raycast_test.cpp compares it with the shadow volumes' reference).
+const RegisteredTechnique& areaRayCast();
 
 }  // namespace testbed

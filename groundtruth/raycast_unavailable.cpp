@@ -10,4 +10,8 @@ const RegisteredTechnique& rayCastGroundTruth() {
   throw InputError("--method raycast: this testbed was built without Embree (TESTBED_WITH_EMBREE=OFF)");
 }
 
+const RegisteredTechnique& areaRayCast() {
+  throw InputError("raycast-area: this testbed was built without Embree (TESTBED_WITH_EMBREE=OFF)");
+}
+
 }  // namespace testbed

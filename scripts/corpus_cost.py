@@ -178,14 +178,30 @@ def plot(scenes, tables, error_name, out_dir):
         plt.close(figure)
 
 
+def soft_metrics_held(records):
+    """The metric table's soft metrics (measured against the area-light reference) that a
+    technique record holds, in table order."""
+    measured = [r for r in records if r.get("technique") not in REFERENCES and isinstance(r.get("error"), dict)]
+    return [m["id"] for m in metric_table.error_metrics()
+            if m["reference"] == "soft" and any(metric_table.value(r, m["id"]) is not None for r in measured)]
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("records", nargs="+", help="a sweep's records.json, or folders holding them")
-    parser.add_argument("--out", required=True, help="folder for cost.md, cost.json and the plots")
+    parser.add_argument("--out", help="folder for cost.md, cost.json and the plots")
     parser.add_argument("--error", default="mismatch_pct", help="error metric (an id of `testbed metrics`)")
     parser.add_argument("--no-plot", action="store_true", help="skip the plots")
+    parser.add_argument("--list-soft", action="store_true",
+                        help="print the soft metrics (against the area-light reference) some record holds, one a "
+                             "line, and write nothing: scripts/corpus.sh draws a view of each")
     args = parser.parse_args(argv)
+    if not args.list_soft and not args.out:
+        parser.error("--out is required")
     try:
+        if args.list_soft:
+            print("\n".join(soft_metrics_held(load_records(args.records))))
+            return 0
         if args.error not in metric_table.ids():
             raise InputError(f"--error: no metric '{args.error}' in the testbed's metric table")
         if metric_table.metric(args.error)["reference"] == "none":

@@ -70,10 +70,12 @@ def stats_sections(folder, stats, shown):
                 cell(number(v.get("median_ratio"), 3), v.get("median_ratio")),
                 cell("–" if "win_rate" not in v else f"{100 * v['win_rate']:.0f} %", v.get("win_rate")),
                 cell(number(v.get("wilcoxon_p"), 3), v.get("wilcoxon_p"))]})
+        reference = stats.get("metric_notes", {}).get(metric, [])
         notes = [f"Over the scenes (N per row; {len(excluded)} excluded: their ground truth cannot rank techniques). "
                  f"Paired with the baseline {stats['baseline']} scene by scene: the median ratio technique / "
                  "baseline, the win rate (a tie counts half) and the two-sided Wilcoxon signed-rank p. CI: bootstrap "
-                 "(BCa) 95 % interval of the mean. stats/stats.md holds every table."]
+                 "(BCa) 95 % interval of the mean. stats/stats.md holds every table."] + \
+            [note[0].upper() + note[1:] for note in reference]
         sections.append(table(f"Across scenes: {metric}", notes,
                               [("technique", False), ("N", True), ("median", True), ("IQR", True), ("mean", True),
                                ("mean 95 % CI", True), ("ratio to " + stats["baseline"], True), ("win rate", True),
@@ -111,7 +113,9 @@ def scenes_section(records, stats, metric="mismatch_pct"):
                  [("scene", False)] + [(label, True) for label in labels], rows)
 
 
-def cost_sections(cost):
+def cost_sections(cost, folder="cost"):
+    """The equal-cost tables of one cost view (FOLDER/cost.json: cost/ for the hard error,
+    cost-<metric>/ for each soft one) with their Pareto plots."""
     sections = []
     for name, rows in cost.get("tables", {}).items():
         heading = metric_table.metric(name)["heading"]
@@ -122,14 +126,14 @@ def cost_sections(cost):
                            cell("–" if r["scene_winner_share"] is None else f"{100 * r['scene_winner_share']:.0f} %",
                                 r["scene_winner_share"])]} for r in rows]
         sections.append(table(
-            f"At equal cost ({heading})",
+            f"At equal cost ({heading})" + ("" if folder == "cost" else f": {cost['error']}"),
             [f"Error: {cost['error']}, over {cost['scenes']} scenes. For each configuration as the budget: the one "
              "with the least median error at no more median cost, and the one that wins most often scene by scene. "
-             "cost/cost.md holds the same tables; cost/scenes/ the plot of every scene."],
+             f"{folder}/cost.md holds the same tables; {folder}/scenes/ the plot of every scene."],
             [("budget", False), ("N", True), ("its cost", True), ("its error", True), ("least error at no more cost", False),
              ("cost", True), ("error", True), ("wins most scenes", False), ("share", True)], body))
         sections.append({"type": "figure", "title": f"Error against {heading}: each technique's Pareto front",
-                         "src": f"cost/cost-{name}.png", "href": f"cost/cost-{name}.png"})
+                         "src": f"{folder}/cost-{name}.png", "href": f"{folder}/cost-{name}.png"})
     return sections
 
 
@@ -150,6 +154,11 @@ def main(argv):
         cost = read_json(os.path.join(folder, "cost", "cost.json"))
         records = read_json(os.path.join(folder, "records.json"))
         shown = [m["id"] for m in metric_table.error_metrics()]
+        # Beside the hard error: every soft metric the statistics hold, scene by scene and
+        # at equal cost (scripts/corpus.sh draws cost-<metric>/ for each).
+        soft = [m["id"] for m in metric_table.error_metrics() if m["reference"] == "soft" and m["id"] in stats["metrics"]]
+        soft_costs = [(f"cost-{name}", read_json(os.path.join(folder, f"cost-{name}", "cost.json"))) for name in soft
+                      if os.path.isfile(os.path.join(folder, f"cost-{name}", "cost.json"))]
     except (InputError, ValueError, metric_table.MetricTableError) as error:
         print(f"corpus_page: {error}", file=sys.stderr)
         return 2
@@ -159,14 +168,18 @@ def main(argv):
         with open(os.path.join(folder, "command.txt"), encoding="utf-8") as f:
             notes += [line.strip() for line in f if line.strip()]
     notes.append(f"Corpus: {len(manifest.get('scenes', []))} scenes, seed {manifest.get('seed')} (scenes/manifest.json).")
-    added = stats_sections(folder, stats, shown) + [scenes_section(records, stats)] + cost_sections(cost)
+    added = stats_sections(folder, stats, shown) + [scenes_section(records, stats)] + \
+        [scenes_section(records, stats, name) for name in soft] + cost_sections(cost)
+    for name, soft_cost in soft_costs:
+        added += cost_sections(soft_cost, name)
     added.append({"type": "links", "title": "Corpus files", "items": [
         {"text": t, "href": h} for t, h in [("stats/findings.md (the findings as sentences)", "stats/findings.md"),
                                              ("stats/stats.md", "stats/stats.md"), ("stats/stats.json", "stats/stats.json"),
                                              ("stats-all-maps/stats.md (every map size, against sm at the largest)",
                                               "stats-all-maps/stats.md"),
                                              ("cost/cost.md", "cost/cost.md"), ("cost/cost.json", "cost/cost.json"),
-                                             ("cost/scenes/ (per scene)", "cost/scenes/"),
+                                             ("cost/scenes/ (per scene)", "cost/scenes/")] +
+                                            [(f"{name}/cost.md", f"{name}/cost.md") for name, _ in soft_costs] + [
                                              ("scenes/manifest.json (what was sampled)", "scenes/manifest.json"),
                                              ("command.txt", "command.txt")] if os.path.exists(os.path.join(folder, h))]})
     # Run again (after new statistics), it replaces what it added before.

@@ -222,6 +222,39 @@ def analyse(table, baseline):
     return results
 
 
+def reference_notes(table, results, baseline):
+    """{metric: [line]}: what each soft metric (the metric table's, against the area-light
+    reference) was measured against and what it leaves out: the reference's samples and
+    light radii as the records name them (area_reference), the techniques judged against
+    the hard ground truth only (a hard output under a spec's default reference), and a
+    baseline without the metric, which leaves the soft table without paired comparisons."""
+    notes = {}
+    for m in metric_table.error_metrics():
+        name = m["id"]
+        if m["reference"] != "soft" or name not in results:
+            continue
+        judged = [r for per_scene in table.values() for r in per_scene.values()
+                  if metric_table.value(r, name) is not None]
+        areas = [r["area_reference"] for r in judged if isinstance(r.get("area_reference"), dict)]
+        samples = sorted({a.get("samples") for a in areas if isinstance(a.get("samples"), int)})
+        radii = [a["light_radius"] for a in areas if isinstance(a.get("light_radius"), (int, float))]
+        line = "against the area-light reference"
+        if samples:
+            line += f" of {', '.join(str(n) for n in samples)} samples"
+        if radii:
+            low, high = min(radii), max(radii)
+            line += f", light radius {number(low, 3)}" + (f"–{number(high, 3)} over the scenes" if high > low else "")
+        lines = [line + f" ({len(judged)} records)."]
+        missing = sorted(label for label in table if label not in results[name])
+        if missing:
+            lines.append("judged against the hard ground truth only (no " + name + "): " + ", ".join(missing) + ".")
+        if baseline not in results[name]:
+            lines.append(f"no paired comparison: the baseline {baseline} has no {name} (a sweep spec's \"reference\": "
+                         "\"both\" judges every technique against the area-light reference).")
+        notes[name] = lines
+    return notes
+
+
 def number(value, digits=4):
     return "–" if value is None else f"{value:.{digits}g}"
 
@@ -296,7 +329,7 @@ def findings_markdown(sentences, baseline):
     return "\n".join(lines)
 
 
-def markdown(results, baseline, flagged, notes):
+def markdown(results, baseline, flagged, notes, metric_notes=None):
     lines = ["# Statistics across scenes", ""]
     lines.append(f"Baseline of the paired comparison: `{baseline}`. Ratio: technique / baseline per scene "
                  "(scenes where the baseline is 0 left out of the ratio). Win: lower than the baseline (a tie counts "
@@ -315,6 +348,9 @@ def markdown(results, baseline, flagged, notes):
     for name, per_label in results.items():
         m = metric_table.metric(name)
         lines += [f"## {name}: {m['description']} ({m['better']} is better)", ""]
+        lines += [f"- {note}" for note in (metric_notes or {}).get(name, [])]
+        if (metric_notes or {}).get(name):
+            lines.append("")
         lines.append("| technique | N | median | IQR | mean | mean 95 % CI | vs baseline: N | median ratio | win rate | "
                      "p | method | Holm p |")
         lines.append("|---|---|---|---|---|---|---|---|---|---|---|---|")
@@ -389,12 +425,14 @@ def main(argv):
     for scene, flag in sorted(flagged.items()):
         print(f"corpus_stats: excluded scene {scene}: {flag}", file=sys.stderr)
     with open(os.path.join(args.out, "stats.md"), "w", encoding="utf-8") as handle:
-        handle.write(markdown(results, args.baseline, flagged, notes) + "\n")
+        metric_notes = reference_notes(table, results, args.baseline)
+        handle.write(markdown(results, args.baseline, flagged, notes, metric_notes) + "\n")
     sentences = findings(results, args.baseline)
     with open(os.path.join(args.out, "findings.md"), "w", encoding="utf-8") as handle:
         handle.write(findings_markdown(sentences, args.baseline) + "\n")
     with open(os.path.join(args.out, "stats.json"), "w", encoding="utf-8") as handle:
         json.dump({"baseline": args.baseline, "shadow_map": args.shadow_map, "excluded": flagged, "notes": notes,
+                   "metric_notes": metric_notes,
                    "alpha": ALPHA, "metrics": results,
                    "findings": [{"metric": name, "sentences": lines} for name, lines in sentences.items()]}, handle, indent=1, sort_keys=True)
         handle.write("\n")

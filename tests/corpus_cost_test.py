@@ -80,6 +80,33 @@ class KnownAnswers(unittest.TestCase):
             for name in ("cost-frame_ms.png", "cost-memory_mb.png", os.path.join("scenes", "s0.png")):
                 self.assertGreater(os.path.getsize(os.path.join(out, name)), 1000, name)
 
+    def test_soft_metrics_get_their_own_view(self):
+        # scripts/corpus.sh draws a view per soft metric that a record holds (--list-soft):
+        # here smsr alone was judged against the area light, on soft_rmse and the umbra leak.
+        records = planted()
+        for r in records:
+            if r["technique"] == "smsr":
+                r["error"].update({"soft_rmse": r["error"]["mismatch_pct"] / 10, "soft_umbra_leak": 0.0})
+        with tempfile.TemporaryDirectory() as tmp:
+            with open(os.path.join(tmp, "records.json"), "w") as handle:
+                json.dump(records, handle)
+            run = subprocess.run([sys.executable, SCRIPT, tmp, "--list-soft"], capture_output=True, text=True)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            self.assertEqual(run.stdout.split(), ["soft_rmse", "soft_umbra_leak"])
+            out = os.path.join(tmp, "cost-soft_rmse")
+            run = subprocess.run([sys.executable, SCRIPT, tmp, "--error", "soft_rmse", "--out", out, "--no-plot"],
+                                 capture_output=True, text=True)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            with open(os.path.join(out, "cost.json")) as handle:
+                cost = json.load(handle)
+            self.assertEqual(cost["error"], "soft_rmse")
+            self.assertEqual(sorted(cost["medians"]["frame_ms"]), ["smsr @1024", "smsr @2048", "smsr @512"])
+            planted_only = os.path.join(tmp, "hard.json")
+            with open(planted_only, "w") as handle:
+                json.dump(planted(), handle)
+            run = subprocess.run([sys.executable, SCRIPT, planted_only, "--list-soft"], capture_output=True, text=True)
+            self.assertEqual((run.returncode, run.stdout.strip()), (0, ""))
+
     def test_bad_input_exits_2_with_one_line(self):
         with tempfile.TemporaryDirectory() as tmp:
             with open(os.path.join(tmp, "records.json"), "w") as handle:

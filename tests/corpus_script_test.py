@@ -19,7 +19,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
 SCRIPT = os.path.join(REPO, "scripts", "corpus.sh")
 TESTBED, OUT = sys.argv[1], os.path.abspath(sys.argv[2])
-OPTIONS = ["--seed", "7", "--count", "3", "--techniques", "sm,pcf", "--shadow-maps", "128,256", "--stats-map", "256"]
+OPTIONS = ["--seed", "7", "--count", "3", "--techniques", "sm,pcf", "--shadow-maps", "128,256", "--stats-map", "256",
+           "--area-samples", "16"]
 DATA = re.compile(r'<script type="application/json" id="page-data">(.*?)</script>', re.S)
 
 
@@ -62,6 +63,27 @@ class CorpusScript(unittest.TestCase):
             cost = json.load(f)
         budgets = {row["budget"] for row in cost["tables"]["frame_ms"]}
         self.assertEqual(budgets, {f"{t} @{m}" for t in ("sm", "pcf") for m in (128, 256)})
+
+    def test_both_references_give_every_soft_metric_its_statistics_and_cost_view(self):
+        # The default --reference both: sm and pcf judged against the area light too, one
+        # reference per scene; the soft metrics' tables, equal-cost views and page sections.
+        with open(os.path.join(self.run_dir, "stats", "stats.json"), encoding="utf-8") as f:
+            stats = json.load(f)
+        soft = [name for name in stats["metrics"] if name.startswith("soft_")]
+        self.assertEqual(len(soft), 4, sorted(stats["metrics"]))
+        for name in soft:
+            self.assertEqual(set(stats["metrics"][name]), {"sm", "pcf"})
+            self.assertEqual(stats["metrics"][name]["pcf"]["summary"]["n"], 3)
+            self.assertIn("vs_baseline", stats["metrics"][name]["pcf"])
+            self.assertIn("of 16 samples", stats["metric_notes"][name][0])
+            with open(os.path.join(self.run_dir, f"cost-{name}", "cost.json"), encoding="utf-8") as f:
+                self.assertEqual(json.load(f)["error"], name)
+        self.assertEqual(self.result.stderr.count("] area-light reference (16 samples)"), 3, self.result.stderr)
+        titles = [s.get("title", "") for s in page_data(self.run_dir)["sections"]]
+        for name in soft:
+            self.assertIn(f"Across scenes: {name}", titles)
+            self.assertIn(f"Every scene: {name} at shadow map 256²", titles)
+            self.assertIn(f"At equal cost (frame ms): {name}", titles)
 
     def test_the_page_shows_the_corpus_and_links_resolve(self):
         data = page_data(self.run_dir)
@@ -115,7 +137,9 @@ class CorpusScript(unittest.TestCase):
         self.assertEqual([(r["cell"], r["error"]) for r in resumed], [(r["cell"], r["error"]) for r in whole])
 
     def test_bad_options_write_nothing(self):
-        for options, field in ((["--stats-map", "512"], "--stats-map"), (["--count", "0"], "count")):
+        for options, field in ((["--stats-map", "512"], "--stats-map"), (["--count", "0"], "count"),
+                               (["--reference", "area"], "--reference"), (["--area-samples", "0"], "--area-samples"),
+                               (["--reference", "hard", "--light-radius", "2"], "--light-radius")):
             out = os.path.join(OUT, "bad")
             run = corpus(out, *options)
             self.assertEqual(run.returncode, 2, run.stderr)

@@ -173,6 +173,64 @@ class Script(unittest.TestCase):
             self.assertIn("missing: no such file or folder", run.stderr)
 
 
+def soft_record(technique, scene, mismatch, soft):
+    """A record judged against the area-light reference too: every soft metric of the
+    table, and the reference it was taken against (area_reference)."""
+    r = record(technique, scene, mismatch)
+    r["error"].update({"soft_rmse": soft, "soft_penumbra_mae": 2 * soft, "soft_outside_mae": soft / 2,
+                       "soft_umbra_leak": soft / 4})
+    r["area_reference"] = {"samples": 64, "light_radius": 1.5 + scene.count("1")}
+    return r
+
+
+class SoftMetrics(unittest.TestCase):
+    def run_stats(self, records):
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "records.json")
+            with open(path, "w") as handle:
+                json.dump(records, handle)
+            out = os.path.join(tmp, "stats")
+            run = subprocess.run([sys.executable, SCRIPT, path, "--out", out, "--no-plot"], capture_output=True, text=True)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            with open(os.path.join(out, "stats.md")) as handle:
+                table = handle.read()
+            with open(os.path.join(out, "stats.json")) as handle:
+                return table, json.load(handle)
+
+    def test_every_soft_metric_gets_a_table_with_n_and_ci_and_paired_comparison(self):
+        # Reference "both": sm and pcf judged against the area light on 6 scenes; pcf's soft
+        # error is lower on every one, so it wins all and each soft table compares it with sm.
+        records = []
+        for i in range(6):
+            records += [soft_record("sm", f"s{i}", 1.0 + i, 0.2 + 0.01 * i), soft_record("pcf", f"s{i}", 1.1 + i, 0.1 + 0.01 * i)]
+        table, result = self.run_stats(records)
+        soft = [m["id"] for m in corpus_stats.metric_table.error_metrics() if m["reference"] == "soft"]
+        self.assertEqual(len(soft), 4)  # soft_rmse, penumbra MAE, outside MAE, umbra leak
+        for name in soft:
+            pcf = result["metrics"][name]["pcf"]
+            self.assertEqual(pcf["summary"]["n"], 6)
+            self.assertIsNotNone(pcf["summary"]["mean_ci95"])
+            self.assertEqual(pcf["vs_baseline"]["win_rate"], 1.0)
+            self.assertIn(f"## {name}:", table)
+            self.assertIn(name, [f["metric"] for f in result["findings"]])
+            self.assertIn("against the area-light reference of 64 samples, light radius 1.5–2.5 over the scenes",
+                          result["metric_notes"][name][0])
+        self.assertIn("| pcf | 6 |", table.split("## soft_umbra_leak")[1])
+
+    def test_hard_outputs_judged_by_the_hard_truth_only_are_named(self):
+        # The default reference judges sm (a hard output) against the hard ground truth only:
+        # the soft tables hold pcf alone and say why there is no paired comparison.
+        records = []
+        for i in range(4):
+            records += [record("sm", f"s{i}", 1.0 + i), soft_record("pcf", f"s{i}", 1.1 + i, 0.1)]
+        table, result = self.run_stats(records)
+        self.assertEqual(list(result["metrics"]["soft_rmse"]), ["pcf"])
+        notes = result["metric_notes"]["soft_rmse"]
+        self.assertIn("judged against the hard ground truth only (no soft_rmse): sm.", notes)
+        self.assertTrue(any(n.startswith("no paired comparison: the baseline sm has no soft_rmse") for n in notes), notes)
+        self.assertIn("- no paired comparison: the baseline sm has no soft_rmse", table)
+
+
 class DocsQuoteTheFindings(unittest.TestCase):
     def test_every_quoted_line_is_a_generated_one(self):
         # docs/corpus.md "What results/corpus shows": between <!-- findings: FILE --> and

@@ -174,13 +174,16 @@ class HtmlReports(unittest.TestCase):
     def test_corpus_tables_link_to_their_cells(self):
         self.open("corpus", VIEWPORTS[0])
         links = self.browser.find_elements(By.CSS_SELECTOR, "table.records a[href^='#cell-']")
-        # The per-scene table (2 scenes x 2 techniques) and the sweep's table (2 rows x 4 columns).
-        self.assertEqual(len(links), 2 * 2 + 2 * 4)
+        # The per-scene tables (2 scenes x 2 techniques) of mismatch_pct and of the four soft
+        # metrics (corpus.sh judges every technique against the area light too by default),
+        # and the sweep's table (2 rows x 4 columns).
+        self.assertEqual(len(links), 5 * 2 * 2 + 2 * 4)
         for link in links:
             target = link.get_attribute("href").split("#")[1]
             self.assertEqual(len(self.browser.find_elements(By.ID, target)), 1, target)
         self.assertTrue(self.browser.find_elements(By.CSS_SELECTOR, "img[src^='stats/']"), "no box plots")
         self.assertTrue(self.browser.find_elements(By.CSS_SELECTOR, "img[src^='cost/']"), "no Pareto plots")
+        self.assertTrue(self.browser.find_elements(By.CSS_SELECTOR, "img[src^='cost-soft_rmse/']"), "no soft Pareto plots")
 
     def test_hostile_names_stay_data(self):
         for run, expected in (("hostile-compare", "wall " + HOSTILE), ("hostile-sweep", "row " + HOSTILE)):

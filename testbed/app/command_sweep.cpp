@@ -71,6 +71,45 @@ FrameRange specFrameRange(const SweepSpec& spec, const std::string& sceneId, con
   }
 }
 
+// The light radius the area-light reference of `scene` uses: the spec's light_radius,
+// else the scene's own.
+double areaRadius(const SweepSpec& spec, const Scene& scene) { return spec.area.lightRadius.value_or(scene.light.radius); }
+
+// Whether `cell` is judged against the area-light reference on `scene` (sweep_plan.h SoftJudging).
+bool judgedSoft(const SweepSpec& spec, const SweepCell& cell, const Scene& scene) {
+  return cell.soft != SoftJudging::None && areaRadius(spec, scene) > 0;
+}
+
+// Gives the scene the spec's light radius, and refuses one the area-light reference cannot
+// use where the spec requires it: before the first frame, naming the spec's field.
+void applyAreaLight(const SweepSpec& spec, const std::string& sceneId, const std::vector<const SweepCell*>& cells,
+                    Scene& scene) {
+  const std::string where = spec.file.string() + ": settings.";
+  if (spec.area.lightRadius) {
+    if (scene.light.type == LightType::Directional && *spec.area.lightRadius >= 90)
+      throw InputError(where + "light_radius: " + std::to_string(*spec.area.lightRadius) + " degrees for scene " + sceneId +
+                       "'s directional light: the sun's angular radius must be below 90");
+    scene.light.radius = float(*spec.area.lightRadius);
+  }
+  for (const SweepCell* cell : cells)
+    if (cell->soft == SoftJudging::Required && !(scene.light.radius > 0))
+      throw InputError(where + "reference: " + sweepReferenceName(spec.area.reference) + ", but scene " + sceneId +
+                       "'s light has no radius (light.radius 0), so its area-light reference would be the hard ground "
+                       "truth; give it one, or settings.light_radius");
+}
+
+// The area-light reference of the runner's frame: the mean of `samples` point-light
+// ground truths over the light's disk (groundtruth/shadow_volumes.h). Rendered once: it is
+// timed by no table, so neither a warm-up frame nor the spec's repeats (each costs
+// `samples` shadow-volume renders).
+ImageF renderAreaReference(FrameRunner& runner, int samples) {
+  const auto& reference = areaLightReference();
+  TechniqueSession session(runner, reference,
+                           resolveParameters("area", reference.info->parameters, {{"area_samples", std::to_string(samples)}}));
+  session.renderFrame();
+  return session.visibility();
+}
+
 }  // namespace
 
 CommandRunner addSweepCommand(CLI::App& app) {
@@ -122,6 +161,13 @@ CommandRunner addSweepCommand(CLI::App& app) {
       }
       for (std::size_t i : owned[key]) parameters.emplace(i, parametersOf(plan.cells[i]));
     }
+    for (auto& [sceneKey, scene] : scenes) {  // the area-light reference's radius, checked before any frame
+      std::vector<const SweepCell*> cells;
+      for (const auto& key : frames)
+        for (std::size_t i : owned[key])
+          if (sceneKeyOf(plan.cells[i]) == sceneKey) cells.push_back(&plan.cells[i]);
+      applyAreaLight(spec, cells.front()->scene, cells, scene);
+    }
     auto context = createContext(options->common.backend);
     const std::string backend = context->description();
     for (const auto& key : frames) {
@@ -165,6 +211,14 @@ CommandRunner addSweepCommand(CLI::App& app) {
         if (i != plan.cells[i].truthCell && toRun(i)) cells.push_back(i);
       return cells;
     };
+    // Whether a truth group (scene, output size) runs a cell judged against the area light:
+    // its reference is then rendered once, like the ground truth, for every map size.
+    auto needsArea = [&](const std::string& truthKey) {
+      for (const auto& key : framesOf[truthKey])
+        for (std::size_t i : techniqueCells(key))
+          if (judgedSoft(spec, plan.cells[i], scenes.at(sceneKeyOf(plan.cells[i])))) return true;
+      return false;
+    };
     std::size_t steps = 0, step = 0;
     for (const auto& truthKey : truthKeys) {
       std::size_t cells = 0;
@@ -175,7 +229,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
           steps += !techniqueCells(key).empty() ||
                    (toRun(truthCell) && plan.cells[owned[key].front()].frameKey() == plan.cells[truthCell].frameKey());
       else if (cells > 0 || toRun(truthCell))
-        steps += cells + 1;
+        steps += cells + 1 + needsArea(truthKey);
     }
     if (steps > 0) warmUpGBuffer({});
     const auto start = Clock::now();
@@ -191,6 +245,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
       const std::vector<std::string>& group = framesOf[truthKey];
       const std::size_t truthCell = plan.cells[owned[group.front()].front()].truthCell;
       std::optional<ImageF> truthVisibility;  // the group's reference, kept only while the group runs
+      std::optional<ImageF> areaVisibility;   // its area-light reference, when a cell of it is judged by one
       for (const auto& key : group) {
         const std::vector<std::size_t> cells = techniqueCells(key);
         const bool truthHere = !truthVisibility && (toRun(truthCell) || !cells.empty());
@@ -263,12 +318,19 @@ CommandRunner addSweepCommand(CLI::App& app) {
           if (own) save(truthCell, figureImagesOf(truthCell, truth.visibility), truthRecord);
           truthVisibility = truth.visibility;
         }
+        if (!areaVisibility && needsArea(truthKey)) {
+          progress(first, "area-light reference (" + std::to_string(spec.area.samples) + " samples)");
+          std::cerr << "\n";
+          areaVisibility = renderAreaReference(runner, spec.area.samples);
+        }
         for (std::size_t i : cells) {
           const SweepCell& cell = plan.cells[i];
           progress(cell, cell.technique);
           const TechniqueRun run = runner.run(techniqueOf(cell), parameters.at(i));
           Record record = makeRecord(run, runner, backend);
-          record.error = computeErrorMetrics(run.visibility, *truthVisibility);
+          const bool soft = judgedSoft(spec, cell, scene);
+          record.error = computeErrorMetrics(run.visibility, *truthVisibility, soft ? &*areaVisibility : nullptr);
+          if (soft) record.areaReference = AreaReferenceRecord{spec.area.samples, areaRadius(spec, scene)};
           std::cerr << ": " << briefSummary(record, nullptr, ", ") << "\n";
           checkSweepPasses(spec, plan, i, record);  // a misnamed pass stops here, not after every cell
           save(i, figureImagesOf(i, run.visibility), record);

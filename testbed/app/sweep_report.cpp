@@ -1,5 +1,6 @@
 #include "testbed/app/sweep_report.h"
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -38,6 +39,24 @@ void stagePlot(OutputFiles& files, const std::string& name, const std::string& t
   runPythonScript("sweep_plot.py", {table.string()}, (files.directory() / (name + ".json")).string());
   for (const char* extension : {".png", ".svg"})
     files.writeText(name + extension, WorkFolder::read(work.path() / (name + extension)));
+}
+
+// What the records' errors were taken against (docs/paper-runs.md "Reference"), for the
+// table's header: the spec's reference and, where cells are judged by the area light, its
+// samples and radius.
+std::string referenceDescription(const SweepSpec& spec, const SweepPlan& plan) {
+  const bool area = std::any_of(plan.cells.begin(), plan.cells.end(),
+                                [](const SweepCell& cell) { return cell.soft != SoftJudging::None; });
+  std::string text = sweepReferenceName(spec.area.reference);
+  text += spec.area.reference == SweepReference::ByOutput
+              ? ": hard outputs against the hard ground truth, filtered ones against the area-light reference too"
+              : area ? ": every technique against the hard ground truth and the area-light reference"
+                     : ": the hard ground truth";
+  if (!area) return text;
+  std::ostringstream radius;
+  if (spec.area.lightRadius) radius << "light radius " << *spec.area.lightRadius;
+  else radius << "each scene's light radius";
+  return text + " (" + std::to_string(spec.area.samples) + " samples, " + radius.str() + ")";
 }
 
 }  // namespace
@@ -135,6 +154,7 @@ void stageSweepReport(OutputFiles& files, const SweepSpec& spec, const SweepPlan
   for (const auto& [backend, cells] : byBackend) {
     const std::string name = byBackend.size() == 1 ? spec.name : spec.name + "." + slug(backend);
     SweepHeader withBackend = header;
+    withBackend.emplace_back("reference", referenceDescription(spec, plan));
     for (auto& [key, value] : withBackend)
       if (key == "backend") value = backend;
     const SweepTable table = buildSweepTable(spec, plan, cells);

@@ -243,6 +243,12 @@ Record read(const Reader& r) {
     if (!sequence.value.is_object() || !sequence.has("series")) sequence.fail("expected an object with \"series\"");
     out.sequence = sequence.value;
   }
+  if (r.has("area_reference")) {
+    const Reader area = r["area_reference"];
+    const std::uint64_t samples = area["samples"].count();
+    if (samples < 1 || samples > 4096) area["samples"].fail("expected 1..4096");
+    out.areaReference = AreaReferenceRecord{int(samples), area["light_radius"].magnitude()};
+  }
   if (r.has("path")) {
     out.path = parsePath(r["path"].text());
     if (!out.path) r["path"].fail("expected \"paper\" or \"fast\"");
@@ -362,6 +368,8 @@ void to_json(json& out, const Record& r) {
   if (r.cell) out["cell"] = *r.cell;
   if (r.shadingMs) out["shading_ms"] = *r.shadingMs;
   if (r.sequence) out["sequence"] = *r.sequence;
+  if (r.areaReference)
+    out["area_reference"] = {{"samples", r.areaReference->samples}, {"light_radius", r.areaReference->lightRadius}};
   if (r.path) out["path"] = std::string(pathName(*r.path));
   if (r.shaderPath) out["shader_path"] = std::string(shaderPathName(*r.shaderPath));
   if (r.memory) out["memory"] = memoryJson(*r.memory);

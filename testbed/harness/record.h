@@ -26,6 +26,15 @@ struct PassesRecord {
   std::map<std::string, double> passesMs;  // by pass name
 };
 
+// The area-light reference a record's soft metrics were taken against ("area_reference":
+// its samples and the light's radius, docs/ground-truth-and-metrics.md): a sweep's study
+// names them, since a spec may replace every scene's radius.
+struct AreaReferenceRecord {
+  int samples = 0;
+  double lightRadius = 0;
+  bool operator==(const AreaReferenceRecord&) const = default;
+};
+
 struct Record {
   std::string technique, scene;
   int width = 0, height = 0;
@@ -54,6 +63,7 @@ struct Record {
   std::optional<PassWork> work;
   bool workRecorded = true;
   std::optional<ErrorMetrics> error;  // null until compared with the ground truth
+  std::optional<AreaReferenceRecord> areaReference;  // with soft metrics, where the run names it
   std::optional<std::size_t> cell;    // a sweep's cell index (records.json only)
   // A sweep cell run over frames (docs/paper-runs.md "Frames"): the sequence record's
   // "frames", "light_fit", "series" and "temporal" blocks; the rest of the record is the

@@ -53,8 +53,28 @@ nlohmann::json SweepCell::toJson() const {
                       {"technique", technique}, {"params", params}};
   if (subdivide) j["subdivide"] = *subdivide;
   if (frames) j["frames"] = *frames;
+  if (soft != SoftJudging::None) j["soft_reference"] = soft == SoftJudging::Required ? "required" : "where_radius";
   return j;
 }
+
+namespace {
+
+// Which reference a technique's cell is judged against, by the spec's "reference" and, by
+// default, the technique's declared output (technique.h OutputKind).
+SoftJudging softJudging(const SweepSpec& spec, const std::string& technique) {
+  if (technique == kGroundTruthId) return SoftJudging::None;
+  switch (spec.area.reference) {
+    case SweepReference::Hard: return SoftJudging::None;
+    case SweepReference::Soft:
+    case SweepReference::Both: return SoftJudging::Required;
+    case SweepReference::ByOutput: break;
+  }
+  // Sequences are compared with the hard ground truth only (the spec refuses soft and both).
+  if (spec.frames || findTechnique(technique).info->output != OutputKind::Filtered) return SoftJudging::None;
+  return spec.area.lightRadius ? SoftJudging::Required : SoftJudging::WhereRadius;
+}
+
+}  // namespace
 
 SweepPlan planSweep(const SweepSpec& spec, const SweepOverrides& overrides) {
   SweepPlan plan;
@@ -100,6 +120,7 @@ SweepPlan planSweep(const SweepSpec& spec, const SweepOverrides& overrides) {
       for (const auto& technique : spec.rows[r].techniques) {
         SweepCell cell = base;
         cell.technique = technique;
+        cell.soft = softJudging(spec, technique);
         const std::string prefix = technique + ".";
         for (const auto* level : {&top.params, &row.params, &col.params})  // later levels win
           for (const auto& [name, value] : *level)

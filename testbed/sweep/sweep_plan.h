@@ -25,6 +25,12 @@ struct SweepOverrides {
   std::optional<int> repeat;
 };
 
+// Whether a cell is judged against the area-light reference as well as the hard ground
+// truth (sweep_spec.h SweepReference): not at all, wherever its scene's light has a
+// radius (the default for filtered outputs: a scene without one has no penumbra to
+// judge by), or always (a spec's explicit soft or both, which refuses such a scene).
+enum class SoftJudging { None, WhereRadius, Required };
+
 struct SweepCell {
   std::string scene;                   // id in the spec's "scenes"
   std::optional<int> subdivide;        // applied to every mesh object of the scene
@@ -35,6 +41,7 @@ struct SweepCell {
   std::map<std::string, std::string> params;  // the technique's own names → value text
   std::size_t truthCell = 0;           // the ground-truth cell of the same frame
   std::optional<std::string> frames;   // the spec's "frames": the cell runs over them
+  SoftJudging soft = SoftJudging::None;
 
   // Identifies the frame set-up (scene, subdivision, sizes, depth format): one FrameRunner.
   std::string frameKey() const;

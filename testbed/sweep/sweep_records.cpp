@@ -82,6 +82,16 @@ void matchRecord(const Record& record, const SweepCell& cell, const std::string&
     differs("shadow_map", std::to_string(record.shadowMap), std::to_string(cell.shadowMap));
   if (record.depthFormat != cell.depthFormat) differs("depth_format", record.depthFormat, cell.depthFormat);
   if (record.params != params) differs("params", briefJson(record.params), briefJson(params));
+  // Soft metrics where the spec judges the cell against the area-light reference, none
+  // where it does not (a cell judged where its light has a radius may have either: the
+  // scene decides, and merge does not read scenes).
+  const bool soft = record.error && record.error->softRmse;
+  if (soft && cell.soft == SoftJudging::None)
+    differs("error.soft_rmse", "measured", "judged against the hard ground truth only");
+  if (!soft && record.error && cell.soft == SoftJudging::Required)
+    differs("error.soft_rmse", "null", "judged against the area-light reference too");
+  if (soft && !record.areaReference)
+    differs("area_reference", "missing", "judged against an area-light reference, which the record must name");
   if (record.sequence.has_value() != cell.frames.has_value())
     differs("sequence", record.sequence ? "a sequence" : "one frame",
             cell.frames ? "run over frames " + *cell.frames : "one frame");

@@ -228,6 +228,51 @@ bool needsBaseline(const Metric& m) {
   return !m.value(probe, nullptr) && m.value(probe, &probe);
 }
 
+// "reference", "area_samples" and "light_radius" of the spec's "settings".
+SweepAreaLight areaLightOf(const json& settings, const SpecReader& r) {
+  SweepAreaLight area;
+  if (settings.contains("reference")) {
+    const std::string name = r.text(settings["reference"], "settings.reference");
+    const std::map<std::string, SweepReference> names = {{"by_output", SweepReference::ByOutput},
+                                                          {"hard", SweepReference::Hard},
+                                                          {"soft", SweepReference::Soft},
+                                                          {"both", SweepReference::Both}};
+    const auto it = names.find(name);
+    if (it == names.end()) r.fail("settings.reference", "expected hard, soft, both or by_output, got " + SpecReader::show(settings["reference"]));
+    area.reference = it->second;
+  }
+  // Without a soft reference these would change nothing: a spec that names them means one.
+  const bool hard = area.reference == SweepReference::Hard;
+  if (settings.contains("area_samples")) {
+    if (hard) r.fail("settings.area_samples", "the spec's reference is hard: no area-light reference is rendered");
+    area.samples = r.integer(settings["area_samples"], "settings.area_samples", 1, 4096);
+  }
+  if (settings.contains("light_radius")) {
+    if (hard) r.fail("settings.light_radius", "the spec's reference is hard: no area-light reference is rendered");
+    const auto radius = r.numberOrNull(settings["light_radius"], "settings.light_radius");
+    if (!radius || !(*radius > 0) || *radius > 1e6)
+      r.fail("settings.light_radius", "expected a number in (0, 1e6] (spot: world units; directional: degrees below 90)");
+    area.lightRadius = *radius;
+  }
+  return area;
+}
+
+// What the reference cannot serve: a soft measure without an area-light reference, and a
+// soft reference over frames (the sequences compare with the hard ground truth only).
+void checkAreaLight(const SweepSpec& spec, const json& document, const SpecReader& r) {
+  const SweepReference reference = spec.area.reference;
+  const Metric* measured = spec.measure.metric;
+  if (measured && measured->reference == MetricReference::Soft && reference == SweepReference::Hard)
+    r.fail("measure", "\"" + spec.measure.name + "\" is measured against the area-light reference, which settings.reference "
+                      "\"hard\" does not render");
+  if (measured && measured->reference == MetricReference::Soft && document.contains("frames"))
+    r.fail("measure", "\"" + spec.measure.name + "\" is measured against the area-light reference, which a spec over "
+                      "\"frames\" does not render (sequences are compared with the hard ground truth)");
+  if (document.contains("frames") && spec.area.refusesNoRadius())
+    r.fail("settings.reference", std::string(sweepReferenceName(reference)) +
+                                     ": not available with \"frames\" (sequences are compared with the hard ground truth)");
+}
+
 SweepMeasure measureOf(const json& value, const SpecReader& r) {
   const std::string name = r.text(value, "measure");
   std::string known;
@@ -378,6 +423,16 @@ bool SweepMeasure::error() const { return !metric || metric->path.starts_with("/
 
 Better SweepMeasure::better() const { return metric ? metric->better : Better::Lower; }
 
+const char* sweepReferenceName(SweepReference reference) {
+  switch (reference) {
+    case SweepReference::Hard: return "hard";
+    case SweepReference::Soft: return "soft";
+    case SweepReference::Both: return "both";
+    case SweepReference::ByOutput: break;
+  }
+  return "by_output";
+}
+
 SweepSpec loadSweepSpec(const fs::path& file) { return parseSweepSpec(readJsonInput(file, kMaxSweepSpecBytes), file); }
 
 SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneFilesMustExist) {
@@ -437,11 +492,13 @@ SweepSpec parseSweepSpec(const json& document, const fs::path& file, bool sceneF
 
   if (document.contains("settings")) {
     const json& settings = document["settings"];
-    r.keys(settings, "settings", with(kSettingKeys, {"repeat"}));
+    r.keys(settings, "settings", with(kSettingKeys, {"repeat", "reference", "area_samples", "light_radius"}));
     spec.settings = r.settings(settings, "settings", spec);
     if (settings.contains("repeat")) spec.repeat = r.integer(settings["repeat"], "settings.repeat", 1, 10000);
+    spec.area = areaLightOf(settings, r);
   }
   if (document.contains("measure")) spec.measure = measureOf(document["measure"], r);
+  checkAreaLight(spec, document, r);
   if (document.contains("frames")) {
     spec.frames = r.text(document["frames"], "frames");
     Scene probe;  // the syntax now; the range against each scene's frames when the sweep loads it

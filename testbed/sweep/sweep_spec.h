@@ -91,6 +91,25 @@ struct SweepMeasure {
   Better better() const;
 };
 
+// What a sweep's techniques are judged against (docs/paper-runs.md "Reference"): the hard
+// ground truth (shadow volumes of the point light) always; the area-light reference too
+// for every technique (Soft, Both: the same metrics, the hard ones being free) or only for
+// those whose declared output is filtered (ByOutput, the default: a hard technique
+// answers lit or shadowed, which the exact hard ground truth judges; a filtered one
+// answers a fraction, which only a reference with a penumbra can judge).
+enum class SweepReference { ByOutput, Hard, Soft, Both };
+const char* sweepReferenceName(SweepReference reference);
+
+// The area-light reference a spec asks for: `reference`, `area_samples` and `light_radius`
+// of its "settings" (one set per spec: the reference is rendered once per scene, output
+// size and frame and every cell of it reads it).
+struct SweepAreaLight {
+  SweepReference reference = SweepReference::ByOutput;
+  int samples = 64;                    // point-light samples over the light's disk (1..4096)
+  std::optional<double> lightRadius;   // replaces every scene's light.radius (spot: world units; directional: degrees)
+  bool refusesNoRadius() const { return reference == SweepReference::Soft || reference == SweepReference::Both; }
+};
+
 // The measure called `name`, or nullopt: a metric with `use`, or a sequence figure.
 std::optional<SweepMeasure> findSweepMeasure(const std::string& name);
 
@@ -101,6 +120,7 @@ struct SweepSpec {
   std::map<std::string, std::filesystem::path> scenes;  // id → scene file (absolute)
   SweepSettings settings;
   int repeat = 1;
+  SweepAreaLight area;
   // What the table's numbers are: a kSweepMeasure metric (frame_ms: the whole frame as the
   // papers measured it, G-buffer plus every pass of the technique; fps; memory_mb).
   SweepMeasure measure{"frame_ms", &metric("frame_ms"), ""};
