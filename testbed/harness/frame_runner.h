@@ -32,7 +32,7 @@ struct RenderSettings {
   DepthFormat depthFormat = DepthFormat::D16;
   int repeat = 1;  // timed frames after the warm-up frame; times are medians (timing.h)
   std::optional<TechniquePath> path;  // none: defaultPath of the context's renderer
-  ShadowSetup shadowSetup;  // --cascades, --splits, --fit (technique/shadow_setup.h)
+  ShadowSetup shadowSetup{};  // --cascades, --splits, --fit (technique/shadow_setup.h)
 };
 
 // The path a run takes unless told (docs/paths.md): `fast` on a software rasterizer, whose
