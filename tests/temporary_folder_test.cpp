@@ -42,7 +42,7 @@ TEST(TemporaryFolders, ACaughtSignalRemovesThem) {
     SCOPED_TRACE(signal);
     TempDir tmp;
     fs::create_directories(tmp / "tmp");
-    const fs::path python = signallingPython(tmp, signal);
+    const fs::path python = signallingPython(tmp.path(), signal);
     for (const SignalledRun& run :
          {SignalledRun{{"compare", "--scene", animated, "--techniques", "sm", "--frames", "0:2", "--size", "96x64",
                         "--shadow-map", "128", "--out", (tmp / "motion").string()},
