@@ -24,31 +24,29 @@ using namespace testbed::test;
 
 const fs::path kOutdoor = fs::path(TESTBED_SOURCE_DIR) / "scenes" / "outdoor";
 
-RenderSettings outdoorSettings(const ShadowSetup& setup) {
-  RenderSettings settings = renderSettings({320, 180}, 512);
-  settings.shadowSetup = setup;
-  return settings;
-}
-
-ErrorMetrics smOnSunField(const ShadowSetup& setup, const std::string& technique = "sm") {
+ErrorMetrics smOnSunField(const ShadowSetup& setup) {
   sharedContext();
   const Scene scene = loadScene(kOutdoor / "sun_field.json");
-  FrameRunner runner(scene, outdoorSettings(setup));
-  return computeErrorMetrics(runTechnique(runner, technique).visibility, groundTruthVisibility(runner));
+  RenderSettings settings = renderSettings({640, 360}, 1024);
+  settings.shadowSetup = setup;
+  FrameRunner runner(scene, settings);
+  return computeErrorMetrics(runTechnique(runner, "sm").visibility, groundTruthVisibility(runner));
 }
 
-// One 512² map over the 400-unit field has texels of about 0.8 units: the near boxes'
-// shadows are a texel or two wide and the slope offset lifts them off. Four PSSM cascades
-// (λ = 0.5) give the near ones texels of a few centimetres. Asserted with a margin: at
-// least a third less mismatch and less leak (measured on llvmpipe, 320×180: see the figures
-// printed and docs/cascades.md).
+// One 1024² map over the 400-unit field has texels of 0.56 units, and the slope offset
+// lifts the near boxes' shadows off: leak (ground-truth shadow farther than 8 px from its
+// boundary, shown lit) reads tens of %. Four PSSM cascades (λ = 0.5) give the nearest
+// texels of 0.07 units. Asserted with a margin: at most a third of one map's mismatch and
+// of its leak, which must itself be above 10 % so the comparison says something (measured
+// on llvmpipe at 640×360: one map 0.79 % mismatch, 41.7 % leak; four cascades 0.075 %, 0 %).
 TEST(Cascades, FourPssmCascadesBeatOneMapOnTheOutdoorScene) {
   const ErrorMetrics one = smOnSunField(parseShadowSetup(1, "pssm", ""));
   const ErrorMetrics four = smOnSunField(parseShadowSetup(4, "pssm", ""));
-  std::cout << "sun-field sm 320x180 512^2: one map mismatch " << one.mismatchPct << " % leak " << one.leakPct
+  std::cout << "sun-field sm 640x360 1024^2: one map mismatch " << one.mismatchPct << " % leak " << one.leakPct
             << " %; 4 pssm cascades mismatch " << four.mismatchPct << " % leak " << four.leakPct << " %\n";
-  EXPECT_LT(four.mismatchPct, one.mismatchPct * (2.0 / 3.0));
-  EXPECT_LT(four.leakPct, one.leakPct * (2.0 / 3.0));
+  EXPECT_GT(one.leakPct, 10.0);
+  EXPECT_LT(four.mismatchPct, one.mismatchPct / 3);
+  EXPECT_LT(four.leakPct, one.leakPct / 3);
 }
 
 // pcf with one tap reads the receiver's cascade exactly as sm does: the shared lookup.
@@ -57,7 +55,9 @@ TEST(Cascades, PcfKernelOneIsSmOnCascadesPixelForPixel) {
   const Scene scene = loadScene(kOutdoor / "sun_field.json");
   for (const char* fit : {"view", "stable"}) {
     SCOPED_TRACE(fit);
-    FrameRunner runner(scene, outdoorSettings(parseShadowSetup(3, "pssm", fit)));
+    RenderSettings settings = renderSettings({320, 180}, 512);
+    settings.shadowSetup = parseShadowSetup(3, "pssm", fit);
+    FrameRunner runner(scene, settings);
     const ImageF sm = runTechnique(runner, "sm").visibility;
     const ImageF pcf = runTechnique(runner, "pcf", {{"kernel", "1"}}).visibility;
     ASSERT_EQ(sm.pixels.size(), pcf.pixels.size());
