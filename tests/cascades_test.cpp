@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "testbed/harness/frame_runner.h"
+#include "testbed/harness/record.h"
 #include "testbed/metrics/metrics.h"
 #include "tests/cli_helpers.h"
 #include "tests/gl_fixture.h"
@@ -107,7 +108,8 @@ TEST(Cascades, StrafeIsStillUnderTheStableFitAndNotUnderTheViewFit) {
 }
 
 // render --cascades 4: the record's light block lists the four maps, their splits
-// contiguous from the first to the last, the nearest map's texels finer than the one map's.
+// contiguous from the first to the last, the nearest map's texels finer than the one map's;
+// the block reads back as it was written.
 TEST(Cascades, RecordListsEveryMap) {
   TempDir tmp;
   const RunResult run = runTestbed({"render", "--scene", (kOutdoor / "sun_field.json").string(), "--technique", "sm",
@@ -129,6 +131,10 @@ TEST(Cascades, RecordListsEveryMap) {
     EXPECT_GT(map.at("extent").get<double>(), 0.0);
   }
   EXPECT_LT(maps[0].at("texel_world")[0].get<double>(), light.at("texel_world")[0].get<double>() / 10);
+  // Read back and written again, the block is the same.
+  const LightRecord read = light.get<LightRecord>();
+  EXPECT_EQ(read.maps.size(), 4u);
+  EXPECT_EQ(json(read), light);
 }
 
 // Bad combinations: exit 2, one line naming the option (and the technique), nothing written.
