@@ -44,9 +44,7 @@ void validateSettings(const RenderSettings& s) {
   if (s.shadowMapSize < 1 || s.shadowMapSize > mapLimit)
     throw InputError("--shadow-map: " + std::to_string(s.shadowMapSize) + " is outside 1.." +
                      std::to_string(mapLimit));
-  if (s.shadowSetup.cascades < 1 || s.shadowSetup.cascades > kMaxCascades)
-    throw InputError("--cascades: " + std::to_string(s.shadowSetup.cascades) + " is outside 1.." +
-                     std::to_string(kMaxCascades));
+  checkShadowSetup(s.shadowSetup);
   if (s.repeat < 1 || s.repeat > kMaxRepeat)
     throw InputError("--repeat: " + std::to_string(s.repeat) + " is outside 1.." + std::to_string(kMaxRepeat));
 }

@@ -48,8 +48,6 @@ std::string ShadowSetup::fitWord() const {
 
 ShadowSetup parseShadowSetup(int cascades, const std::string& splits, const std::string& fit) {
   ShadowSetup setup;
-  if (cascades < 1 || cascades > kMaxCascades)
-    throw InputError("--cascades: " + std::to_string(cascades) + " is outside 1.." + std::to_string(kMaxCascades));
   setup.cascades = cascades;
   if (splits == "uniform")
     setup.splits = SplitScheme::Uniform;
@@ -71,11 +69,18 @@ ShadowSetup parseShadowSetup(int cascades, const std::string& splits, const std:
     setup.fit = MapFit::Stable;
   else
     throw InputError("--fit: expected scene, view or stable, got '" + oneLine(fit) + "'");
-  // One map fitted to the whole scene, however many times, is no cascade.
-  if (setup.fit == MapFit::Scene && cascades > 1)
-    throw InputError("--fit scene: fits one map to the whole scene; " + std::to_string(cascades) +
-                     " cascades need --fit view or stable");
+  checkShadowSetup(setup);
   return setup;
+}
+
+void checkShadowSetup(const ShadowSetup& setup) {
+  if (setup.cascades < 1 || setup.cascades > kMaxCascades)
+    throw InputError("--cascades: " + std::to_string(setup.cascades) + " is outside 1.." +
+                     std::to_string(kMaxCascades));
+  // One map fitted to the whole scene, however many times, is no cascade.
+  if (setup.fit == MapFit::Scene && setup.cascades > 1)
+    throw InputError("--fit scene: fits one map to the whole scene; " + std::to_string(setup.cascades) +
+                     " cascades need --fit view or stable");
 }
 
 void validateShadowSetup(const ShadowSetup& setup, const LightDesc& light, const std::string& sceneFile) {

@@ -42,6 +42,10 @@ struct ShadowSetup {
 // The set-up from the options' words; `fit` empty: scene for one cascade, view for more.
 // Throws InputError naming the option (--cascades, --splits, --fit) and the value.
 ShadowSetup parseShadowSetup(int cascades, const std::string& splits, const std::string& fit);
+// Throws InputError naming the option where the set-up is not one: cascades outside
+// 1..kMaxCascades, or several maps each fitted to the whole scene. parseShadowSetup and the
+// harness (validateSettings) both check through it.
+void checkShadowSetup(const ShadowSetup& setup);
 // Throws InputError where the set-up is undefined for the scene's light: a stable fit
 // snaps an orthographic map's origin, which a spot light's perspective map has no
 // world-fixed grid for.
