@@ -3,7 +3,10 @@
 // map, then one timed full-screen pass running the technique's own fragment shader with
 // the receiver and shadow-map uniforms bound. A technique derives
 // ShadowMapScreenTechnique<P>, names its shader and pass and sets its own uniforms; the
-// passes, timing, bindings and the shadow map's parameters live here once.
+// passes, timing, bindings and the shadow map's parameters live here once. With a run's
+// cascades (FrameInputs::shadowSetup, docs/cascades.md) the map is an array of one layer per
+// cascade and the same shader, compiled with TESTBED_CASCADES, reads each receiver's layer
+// (glsl/cascades.glsl); with the default set-up it is the one map, as it always was.
 #include <string>
 #include <utility>
 #include <vector>
