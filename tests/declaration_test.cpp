@@ -237,7 +237,8 @@ TEST(Declarations, SweepSpecsNameOnlyDeclaredPasses) {
   const auto message = inputErrorOf([&] { checkDeclaredPasses(loadSweepSpec(spec)); });
   ASSERT_TRUE(message);
   EXPECT_EQ(*message, spec.string() + ": rows[0].passes: sm declares no pass 'visibilty' (its passes: gbuffer, "
-                                      "frame, shading, shadow-map, visibility)");
+                                      "frame, shading, shadow-map, visibility, cascade-0, cascade-1, cascade-2, "
+                                      "cascade-3)");
   // The command refuses it before it renders anything: exit 2, one line, no output folder.
   const RunResult run = runTestbed({"sweep", "--spec", spec.string(), "--out", (dir / "out").string()});
   EXPECT_TRUE(rejectedWithOneLine(run));

@@ -36,8 +36,9 @@ class PercentageCloserFiltering final : public ShadowMapScreenTechnique<PcfParam
 TESTBED_REGISTER_TECHNIQUE(PercentageCloserFiltering, .id = "pcf", .output = OutputKind::Filtered,
                            .citation = "Reeves, Salesin, Cook, Rendering antialiased shadows with depth maps, SIGGRAPH 1987",
                            .summary = "percentage-closer filtering: fraction of k×k nearest depth tests that are lit",
-                           .passes = PercentageCloserFiltering::declaredPasses("k×k depth tests averaged (Reeves, Salesin & Cook, SIGGRAPH 1987)"),
-                           .resources = PercentageCloserFiltering::declaredResources());
+                           .passes = PercentageCloserFiltering::withCascadePasses(PercentageCloserFiltering::declaredPasses(
+                               "k×k depth tests averaged (Reeves, Salesin & Cook, SIGGRAPH 1987)")),
+                           .resources = PercentageCloserFiltering::declaredResources(), .cascades = {.supported = true});
 
 }  // namespace
 }  // namespace testbed

@@ -24,8 +24,9 @@ class PlainShadowMap final : public ShadowMapScreenTechnique<PlainShadowMapParam
 TESTBED_REGISTER_TECHNIQUE(PlainShadowMap, .id = "sm", .output = OutputKind::Hard,
                            .citation = "Williams, Casting curved shadows on curved surfaces, SIGGRAPH 1978",
                            .summary = "plain shadow mapping: one nearest depth test per pixel",
-                           .passes = PlainShadowMap::declaredPasses("the depth test per pixel (Williams, SIGGRAPH 1978)"),
-                           .resources = PlainShadowMap::declaredResources());
+                           .passes = PlainShadowMap::withCascadePasses(
+                               PlainShadowMap::declaredPasses("the depth test per pixel (Williams, SIGGRAPH 1978)")),
+                           .resources = PlainShadowMap::declaredResources(), .cascades = {.supported = true});
 
 }  // namespace
 }  // namespace testbed

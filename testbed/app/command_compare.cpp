@@ -81,6 +81,7 @@ std::map<std::string, std::map<std::string, std::string>> routeAssignments(const
 CommandRunner addCompareCommand(CLI::App& app) {
   struct Options {
     CommonOptions common;
+    ShadowSetupOptions shadow;
     std::string scene, techniques = "all";
     std::vector<std::string> assignments;
     int areaSamples = 0;
@@ -104,9 +105,11 @@ CommandRunner addCompareCommand(CLI::App& app) {
   addFramesOption(*command, options->frames);
   command->add_flag("--no-plot", options->noPlot, "with --frames: skip the error-over-time plots");
   options->common.addTo(*command);
+  options->shadow.addTo(*command);
 
   return {command, [options]() {
-    const RenderSettings settings = options->common.settings();
+    RenderSettings settings = options->common.settings();
+    settings.shadowSetup = options->shadow.setup();
     loadPlugins(options->common.plugins);
     const auto techniques = chooseTechniques(options->techniques);
     const auto assignments = routeAssignments(options->assignments);
@@ -121,6 +124,7 @@ CommandRunner addCompareCommand(CLI::App& app) {
     const bool softMaps = options->reference != "hard", hardMaps = options->reference != "soft";
     const int areaSamples = softMaps && options->areaSamples == 0 ? 64 : options->areaSamples;
     Scene scene = loadScene(options->scene);
+    options->shadow.check(settings.shadowSetup, scene, options->scene, techniques);
     if (softMaps && !options->frames.empty()) throw InputError("--reference " + options->reference + ": not available with --frames");
     if (softMaps && !(scene.light.radius > 0))
       throw InputError(options->scene + ": light.radius: 0, so the area-light reference of --reference " +

@@ -16,6 +16,7 @@ namespace testbed {
 CommandRunner addRenderCommand(CLI::App& app) {
   struct Options {
     CommonOptions common;
+    ShadowSetupOptions shadow;
     std::string scene, technique;
     std::vector<std::string> assignments;
     std::string frames;
@@ -27,15 +28,18 @@ CommandRunner addRenderCommand(CLI::App& app) {
   addSetOption(*command, options->assignments, "technique parameter name=value (repeatable)");
   addFramesOption(*command, options->frames);
   options->common.addTo(*command);
+  options->shadow.addTo(*command);
 
   return {command, [options]() {
     // Everything the user typed is checked before any GL work or any file is written.
-    const RenderSettings settings = options->common.settings();
+    RenderSettings settings = options->common.settings();
+    settings.shadowSetup = options->shadow.setup();
     loadPlugins(options->common.plugins);
     const RegisteredTechnique& technique = findTechnique(options->technique);
     const ParameterSet parameters =
         resolveParameters(technique.info->id, technique.info->parameters, parseAssignments(options->assignments));
     Scene scene = loadScene(options->scene);
+    options->shadow.check(settings.shadowSetup, scene, options->scene, {&technique});
     if (!options->frames.empty()) {
       const SequenceJob job{parseFrameRange(options->frames, scene), false, {{&technique, parameters}}};
       runSequenceCommand(job, scene, settings, options->common.backend, options->common.out);

@@ -34,6 +34,22 @@ struct CommonOptions {
   RenderSettings settings() const;
 };
 
+// --cascades, --splits and --fit of render and compare: the shadow-map set-up
+// (technique/shadow_setup.h, docs/cascades.md), the same meaning in both and in sequences.
+struct ShadowSetupOptions {
+  int cascades = 1;
+  std::string splits = "pssm";
+  std::string fit;  // empty: scene for one cascade, view for more
+
+  void addTo(CLI::App& command);
+  // Parses the words; throws InputError naming the option.
+  ShadowSetup setup() const;
+  // Checks the set-up against the scene's light and every technique asked for (InputError:
+  // exit 2, before anything is written).
+  void check(const ShadowSetup& setup, const Scene& scene, const std::string& sceneFile,
+             const std::vector<const RegisteredTechnique*>& techniques) const;
+};
+
 // --plugin PATH (repeatable): technique libraries, see testbed/app/plugins.h.
 void addPluginOption(CLI::App& command, std::vector<std::string>& paths);
 // --out DIR, required: the folder a command writes into.

@@ -23,6 +23,24 @@ void CommonOptions::addTo(CLI::App& command) {
   addPluginOption(command, plugins);
 }
 
+void ShadowSetupOptions::addTo(CLI::App& command) {
+  command.add_option("--cascades", cascades,
+                     "shadow maps splitting the camera's depth range, 1.." + std::to_string(kMaxCascades) +
+                         " (docs/cascades.md)")
+      ->capture_default_str();
+  command.add_option("--splits", splits, "split scheme: uniform, log, pssm or pssm:λ (λ in [0, 1], default 0.5)")
+      ->capture_default_str();
+  command.add_option("--fit", fit, "each map fitted to: scene, view or stable (default: scene for one cascade, view for more)");
+}
+
+ShadowSetup ShadowSetupOptions::setup() const { return parseShadowSetup(cascades, splits, fit); }
+
+void ShadowSetupOptions::check(const ShadowSetup& setup, const Scene& scene, const std::string& sceneFile,
+                               const std::vector<const RegisteredTechnique*>& techniques) const {
+  validateShadowSetup(setup, scene.light, sceneFile);
+  for (const RegisteredTechnique* technique : techniques) requireCascadeSupport(*technique->info, setup);
+}
+
 namespace {
 
 // A string option given once per value, any number of times.

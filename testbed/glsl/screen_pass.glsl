@@ -18,6 +18,9 @@
 // pixels. With SCREEN_PASS_MARKED defined (second draw) screenVisibility runs on the
 // marked pixels only, which the early depth test finds before the shader runs.
 #include "testbed/glsl/receiver.glsl"
+#ifdef TESTBED_CASCADES
+#include "testbed/glsl/cascades.glsl"
+#endif
 
 #ifndef SCREEN_PASS_OUTPUT
 layout(location = 0) out float outVisibility;
@@ -37,6 +40,12 @@ void main() {
   gl_FragDepth = 1.0;
 #endif
   vec3 light = lightSpace(r.position);
+#ifdef TESTBED_CASCADES
+  // The receiver's cascade and its coordinates in that map. The frustum rule stays the
+  // frame light's: a stable cascade's square may reach beyond it.
+  gCascade = cascadeOf(r.position);
+  if (insideLightFrustum(light)) light = lightSpace(cascadeViewProjection(gCascade), r.position);
+#endif
   if (facesAwayFromLight(r)) {
     screenFacingAway(r);
     return;

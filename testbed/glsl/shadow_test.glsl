@@ -2,9 +2,14 @@
 // Outside the map the border depth 0 answers, so everything outside reads as shadow.
 // Each test takes the map it reads (a 2D map, or a layer of an array of maps: cascades);
 // the forms without one read the shared shadow map, uShadowMap (bindShadowMap,
-// render/shadow_map_pass.h).
+// render/shadow_map_pass.h), or with TESTBED_CASCADES the receiver's cascade's layer of
+// uShadowMaps (glsl/cascades.glsl).
+#ifdef TESTBED_CASCADES
+#include "testbed/glsl/cascades.glsl"
+#else
 uniform sampler2D uShadowMap;
-uniform ivec2 uShadowMapSize;
+#endif
+uniform ivec2 uShadowMapSize;  // a map's size (each cascade's)
 
 // The comparison itself, the one every test below makes.
 float shadowCompare(float stored, float depth, float bias) { return depth - bias <= stored ? 1.0 : 0.0; }
@@ -15,7 +20,11 @@ float shadowTest(sampler2D map, vec2 uv, float depth, float bias) {
 float shadowTest(sampler2DArray maps, int layer, vec2 uv, float depth, float bias) {
   return shadowCompare(texture(maps, vec3(uv, float(layer))).r, depth, bias);
 }
+#ifdef TESTBED_CASCADES
+float shadowTest(vec2 uv, float depth, float bias) { return shadowTest(uShadowMaps, gCascade, uv, depth, bias); }
+#else
 float shadowTest(vec2 uv, float depth, float bias) { return shadowTest(uShadowMap, uv, depth, bias); }
+#endif
 
 // The same at an explicit texel of a map of `size` texels (neighbour tests of the
 // revectorization family): the nearest lookup at the texel's centre.
@@ -27,5 +36,5 @@ float shadowTestTexel(sampler2DArray maps, int layer, ivec2 texel, float depth, 
   return shadowTest(maps, layer, shadowTexelUv(texel, textureSize(maps, 0).xy), depth, bias);
 }
 float shadowTestTexel(ivec2 texel, float depth, float bias) {
-  return shadowTest(uShadowMap, shadowTexelUv(texel, uShadowMapSize), depth, bias);
+  return shadowTest(shadowTexelUv(texel, uShadowMapSize), depth, bias);
 }

@@ -17,7 +17,7 @@
 // Bound by every screen pass (receiver_inputs.h, shadow_map_pass.h).
 TESTBED_UNIT(Texture, kGPositionTextureUnit, 0, Shared)    // receiver.glsl's uGPosition
 TESTBED_UNIT(Texture, kGNormalTextureUnit, 1, Shared)      // receiver.glsl's uGNormal
-TESTBED_UNIT(Texture, kShadowMapTextureUnit, 2, Shared)    // shadow_test.glsl's and depth_image.frag's uShadowMap
+TESTBED_UNIT(Texture, kShadowMapTextureUnit, 2, Shared)    // shadow_test.glsl's and depth_image.frag's uShadowMap, cascades.glsl's uShadowMaps
 TESTBED_UNIT(Image, kDepthImageUnit, 5, Shared)            // revectorization.glsl's uShadowImage (depth_image.h)
 
 // The techniques' own.

@@ -44,6 +44,7 @@ void validateSettings(const RenderSettings& s) {
   if (s.shadowMapSize < 1 || s.shadowMapSize > mapLimit)
     throw InputError("--shadow-map: " + std::to_string(s.shadowMapSize) + " is outside 1.." +
                      std::to_string(mapLimit));
+  checkShadowSetup(s.shadowSetup);
   if (s.repeat < 1 || s.repeat > kMaxRepeat)
     throw InputError("--repeat: " + std::to_string(s.repeat) + " is outside 1.." + std::to_string(kMaxRepeat));
 }
@@ -55,12 +56,15 @@ TechniquePath defaultPath(std::string_view renderer) {
 FrameRunner::FrameRunner(const Scene& scene, const RenderSettings& settings)
     : scene_(scene), settings_(settings),
       path_(settings.path.value_or(defaultPath(reinterpret_cast<const char*>(glGetString(GL_RENDERER))))),
-      light_(fittedLightTransforms(scene)), geometry_(scene),
+      fitCamera_(scene.camera), light_(fittedLightTransforms(scene)), geometry_(scene),
       gbuffer_(settings.size), shading_(settings.size) {
   renderGBuffer();
 }
 
-void FrameRunner::lightMoved() { light_ = fittedLightTransforms(scene_); }
+void FrameRunner::lightMoved() {
+  light_ = fittedLightTransforms(scene_);
+  fitCamera_ = scene_.camera;
+}
 
 void FrameRunner::objectsMoved(const std::vector<std::size_t>& objects) { geometry_.update(scene_, objects); }
 
@@ -82,7 +86,7 @@ FrameInputs FrameRunner::inputs() const {
   return FrameInputs{scene_, geometry_, gbuffer_, settings_.size,
                      cameraTransforms(scene_.camera, aspectOf(settings_.size)),
                      light_, settings_.shadowMapSize, settings_.depthFormat, path_,
-                     scene_.camera, geometry_.bounds()};
+                     scene_.camera, geometry_.bounds(), settings_.shadowSetup, fitCamera_};
 }
 
 TechniqueSession::TechniqueSession(FrameRunner& runner, const RegisteredTechnique& technique,

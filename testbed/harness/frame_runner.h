@@ -32,6 +32,7 @@ struct RenderSettings {
   DepthFormat depthFormat = DepthFormat::D16;
   int repeat = 1;  // timed frames after the warm-up frame; times are medians (timing.h)
   std::optional<TechniquePath> path;  // none: defaultPath of the context's renderer
+  ShadowSetup shadowSetup{};  // --cascades, --splits, --fit (technique/shadow_setup.h)
 };
 
 // The path a run takes unless told (docs/paths.md): `fast` on a software rasterizer, whose
@@ -115,7 +116,8 @@ class FrameRunner {
   // Renders and reads back the G-buffer from the scene's current camera (the constructor
   // does it once; the viewer again whenever the camera moves).
   void renderGBuffer();
-  // Fits the light's transforms to the scene's current light again (scene/light_fit.h).
+  // Fits the light's transforms to the scene's current light again (scene/light_fit.h), and
+  // the shadow-map set-up (its cascades) to the scene's current camera.
   void lightMoved();
   // Uploads again the meshes of these objects, moved by an animation (scene/animation.h).
   void objectsMoved(const std::vector<std::size_t>& objects);
@@ -140,6 +142,9 @@ class FrameRunner {
   const Scene& scene_;
   RenderSettings settings_;
   TechniquePath path_;
+  // The camera the shadow-map set-up is fitted to: refitted with the light (lightMoved), so a
+  // held view (docs/motion.md) renders the previous frame's maps through a new camera.
+  CameraDesc fitCamera_;
   LightTransforms light_;
   GpuScene geometry_;
   GBuffer gbuffer_;

@@ -204,6 +204,10 @@ LightRecord readLight(const Reader& r) {
     for (std::size_t i = 0; i < maps.value.size(); ++i)
       l.maps.push_back(readLight(Reader{maps.value[i], maps.path + "[" + std::to_string(i) + "]"}));
   }
+  if (r.has("setup")) {
+    const Reader setup = r["setup"];
+    l.setup = LightRecord::Setup{int(setup["cascades"].count()), setup["splits"].text(), setup["fit"].text()};
+  }
   return l;
 }
 
@@ -305,6 +309,8 @@ Record makeRecord(const TechniqueRun& run, const FrameRunner& runner, const std:
   r.shaderPath = shaderPath();
   r.work = run.times.work;
   r.light = lightSetupRecord(runner.light(), s.shadowMapSize, s.depthFormat, run.params, run.maps);
+  if (!s.shadowSetup.single())
+    r.light.setup = LightRecord::Setup{s.shadowSetup.cascades, s.shadowSetup.splitsWord(), s.shadowSetup.fitWord()};
   r.backend = backend;
   return r;
 }
@@ -340,6 +346,7 @@ void to_json(json& out, const LightRecord& l) {
   if (l.offsetWorld) out["offset_world"] = json::array({(*l.offsetWorld)[0], (*l.offsetWorld)[1]});
   if (l.split) out["split"] = json::array({(*l.split)[0], (*l.split)[1]});
   if (!l.maps.empty()) out["maps"] = l.maps;
+  if (l.setup) out["setup"] = {{"cascades", l.setup->cascades}, {"splits", l.setup->splits}, {"fit", l.setup->fit}};
 }
 
 void from_json(const json& value, LightRecord& light) {

@@ -98,6 +98,13 @@ struct LightRecord {
   // The maps a technique reported (ShadowTechnique::shadowMaps(), technique.h), each
   // described like the light; none (the JSON has no "maps"): the one map of the light.
   std::vector<LightRecord> maps;
+  // The shadow-map set-up (technique/shadow_setup.h) where it is not the default: "setup":
+  // {"cascades", "splits", "fit"}; none, one map fitted to the scene.
+  struct Setup {
+    int cascades = 1;
+    std::string splits, fit;
+  };
+  std::optional<Setup> setup;
 };
 LightRecord lightSetupRecord(const LightTransforms& light, int shadowMapSize, DepthFormat format,
                              const nlohmann::json& params, const std::vector<ShadowMapUse>& maps = {});

@@ -1,22 +1,80 @@
 #include "testbed/render/shadow_map_screen_technique.h"
 
+#include <algorithm>
+#include <string>
+
+#include "testbed/glsl/units.h"
 #include "testbed/render/receiver_inputs.h"
+#include "testbed/technique/cascades.h"
 
 namespace testbed {
+
+namespace {
+std::string cascadePass(int i) { return "cascade-" + std::to_string(i); }
+}  // namespace
 
 std::vector<PassDeclaration> ShadowMapScreenBase::declaredPasses(std::string paperStep, std::string passName) {
   return {ShadowMapPass::declaredPass(), {.name = std::move(passName), .paperStep = std::move(paperStep)}};
 }
 
+std::vector<PassDeclaration> ShadowMapScreenBase::withCascadePasses(std::vector<PassDeclaration> passes) {
+  for (int i = 0; i < kMaxCascades; ++i)
+    passes.push_back(ShadowMapPass::declaredPass(
+        cascadePass(i), "cascade " + std::to_string(i) + "'s map, fitted to its slice of the view (Zhang et al., "
+                        "Parallel-split shadow maps for large-scale virtual environments, VRCIA 2006)"));
+  return passes;
+}
+
+void ShadowMapScreenBase::renderCascades(const FrameInputs& in, PassTimer& timer) {
+  const std::vector<CascadeMap> cascades = fitCascades(in.shadowSetup, in.light, in.fitCamera, in.aspect(),
+                                                       in.sceneBounds, in.shadowMapSize);
+  shadowMap_.setLayers(int(cascades.size()));
+  maps_.clear();
+  for (std::size_t i = 0; i < cascades.size(); ++i) {
+    shadowMap_.render(in, cascades[i].light, cascadePass(int(i)), timer, int(i));
+    maps_.push_back({.light = cascades[i].light, .split = cascades[i].split});
+  }
+}
+
+void ShadowMapScreenBase::bindCascades(const Program& program, const FrameInputs& in) const {
+  std::vector<float> matrices(kMaxCascades * 16, 0.0f), splitFar(kMaxCascades, 0.0f);
+  for (std::size_t i = 0; i < maps_.size(); ++i) {
+    const glm::mat4 m = maps_[i].light.viewProjection();
+    std::copy_n(&m[0][0], 16, matrices.begin() + std::ptrdiff_t(i * 16));
+    splitFar[i] = float((*maps_[i].split)[1]);
+  }
+  bindMap(program, "uShadowMaps", kShadowMapTextureUnit, shadowMap_.depth());
+  program.set("uShadowMapSize", glm::ivec2(in.shadowMapSize));
+  program.set("uCascadeCount", int(maps_.size()));
+  program.set("uCascadeMatrices", matrices);
+  program.set("uCascadeSplitFar", splitFar);
+  program.set("uCascadeEye", in.fitCamera.eye);
+  program.set("uCascadeForward", glm::normalize(in.fitCamera.target - in.fitCamera.eye));
+}
+
 void ShadowMapScreenBase::render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) {
-  if (!program_) program_ = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_);
-  shadowMap_.render(in, timer);
+  // The default set-up takes the path it always took, so its images do not change by a bit.
+  const bool cascades = !in.shadowSetup.single();
+  Program& program = cascades ? cascadeProgram_ : program_;
+  if (!program)
+    program = Program::graphics("testbed/render/fullscreen.vert", fragmentKey_,
+                                cascades ? "#define TESTBED_CASCADES\n" : "");
+  if (cascades) {
+    renderCascades(in, timer);
+  } else {
+    shadowMap_.setLayers(0);
+    maps_.clear();
+    shadowMap_.render(in, timer);
+  }
   {
     auto scope = timer.scope(passName_);
-    bindReceiverInputs(program_, in);
-    bindShadowMap(program_, shadowMap_.depth());
-    setUniforms(program_, in);
-    screen_.draw(program_, out.framebuffer, in.size);
+    bindReceiverInputs(program, in);
+    if (cascades)
+      bindCascades(program, in);
+    else
+      bindShadowMap(program, shadowMap_.depth());
+    setUniforms(program, in);
+    screen_.draw(program, out.framebuffer, in.size);
   }
   afterTimedPasses(in, shadowMap_.depth());
 }

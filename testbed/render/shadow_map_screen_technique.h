@@ -3,7 +3,10 @@
 // map, then one timed full-screen pass running the technique's own fragment shader with
 // the receiver and shadow-map uniforms bound. A technique derives
 // ShadowMapScreenTechnique<P>, names its shader and pass and sets its own uniforms; the
-// passes, timing, bindings and the shadow map's parameters live here once.
+// passes, timing, bindings and the shadow map's parameters live here once. With a run's
+// cascades (FrameInputs::shadowSetup, docs/cascades.md) the map is an array of one layer per
+// cascade and the same shader, compiled with TESTBED_CASCADES, reads each receiver's layer
+// (glsl/cascades.glsl); with the default set-up it is the one map, as it always was.
 #include <string>
 #include <utility>
 #include <vector>
@@ -22,8 +25,13 @@ class ShadowMapScreenBase : public ShadowTechnique {
   // and its screen pass `passName`, which implements `paperStep`.
   static std::vector<PassDeclaration> declaredPasses(std::string paperStep, std::string passName = "visibility");
   static std::vector<ResourceDeclaration> declaredResources() { return {ShadowMapPass::declaredMap()}; }
+  // `passes` and a pass per cascade ("cascade-0" …), for a technique that renders the run's
+  // cascades (CascadeSupport in technique.h): its map per cascade, timed apart.
+  static std::vector<PassDeclaration> withCascadePasses(std::vector<PassDeclaration> passes);
 
   void render(const FrameInputs& in, PassTimer& timer, const VisibilityTarget& out) final;
+  // The cascades of the last frame (none with the default set-up: the one map of the light).
+  std::vector<ShadowMapUse> shadowMaps() const override { return maps_; }
 
  protected:
   // `fragmentKey`: the embedded shader of the screen pass; `passName`: its timer scope.
@@ -39,10 +47,15 @@ class ShadowMapScreenBase : public ShadowTechnique {
   virtual void afterTimedPasses(const FrameInputs&, const Texture& /*shadowMap*/) {}
 
  private:
+  // The set-up's maps into the array's layers, bound with glsl/cascades.glsl's uniforms.
+  void renderCascades(const FrameInputs& in, PassTimer& timer);
+  void bindCascades(const Program& program, const FrameInputs& in) const;
+
   std::string fragmentKey_, passName_;
   ShadowMapPass shadowMap_;
   ScreenPass screen_;
-  Program program_;
+  Program program_, cascadeProgram_;  // cascadeProgram_: compiled with TESTBED_CASCADES
+  std::vector<ShadowMapUse> maps_;
 };
 
 // P: the technique's parameter struct, holding the shadow map's as `shadowMap`.

@@ -31,7 +31,7 @@
 // 4: ShadowMapScreenTechnique::setUniforms takes the frame's inputs, glsl/light.glsl;
 // 5: TechniqueInfo declares the passes and resources (declaration.h); 6: FrameInputs gives
 // the camera's set-up and the scene's bounds, ShadowTechnique::shadowMaps() reports maps.
-#define TESTBED_PLUGIN_API_VERSION 6
+#define TESTBED_PLUGIN_API_VERSION 7
 
 namespace testbed {
 

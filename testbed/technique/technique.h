@@ -23,6 +23,7 @@
 #include "testbed/technique/parameter_binder.h"
 #include "testbed/technique/parameters.h"
 #include "testbed/technique/path.h"
+#include "testbed/technique/shadow_setup.h"
 
 namespace testbed {
 
@@ -30,6 +31,15 @@ class GpuScene;
 class GBuffer;
 
 enum class OutputKind { Hard, Filtered };
+
+// Whether a technique renders the run's shadow-map set-up (shadow_setup.h) beyond its
+// default, one map fitted to the scene: sm and pcf do, through the shared shadow map
+// (render/shadow_map_screen_technique.h); the others read the one map of the light and say
+// so, and asking them for cascades is bad input naming `reason` (docs/techniques.md).
+struct CascadeSupport {
+  bool supported = false;
+  std::string reason = "its passes read the light's one shadow map, not the cascade array; not ported yet";
+};
 
 // A technique's registration (registry.h) gives id, output, citation, summary, passes and
 // resources as designated initializers and adds family and parameters; every member has an
@@ -43,6 +53,7 @@ struct TechniqueInfo {
   // Every pass it times and every resource it allocates, on either path (declaration.h).
   std::vector<PassDeclaration> passes{};
   std::vector<ResourceDeclaration> resources{};
+  CascadeSupport cascades{};
   std::vector<ParameterSpec> parameters{};  // declaredParameters<P>() of its parameter struct
 };
 
@@ -65,6 +76,11 @@ struct FrameInputs {
   // Every triangle's vertices as they are this frame, bounded once per upload (moved
   // objects bound again), not per frame.
   WorldBounds sceneBounds{};
+  // The run's shadow-map set-up (--cascades, --splits, --fit) and the camera its maps are
+  // fitted to: the frame's camera, except in a held view (docs/motion.md), which shows the
+  // previous frame's set-up, fitted to the previous camera, through this frame's camera.
+  ShadowSetup shadowSetup{};
+  CameraDesc fitCamera{};
 
   float aspect() const { return float(size.x) / float(size.y); }
 };
@@ -104,6 +120,10 @@ class ShadowTechnique {
   // the record lists each (light.maps). Empty, the default: one map of in.light.
   virtual std::vector<ShadowMapUse> shadowMaps() const { return {}; }
 };
+
+// Throws InputError naming the technique, the option and its reason when `setup` is not the
+// default and the technique does not support it (CascadeSupport).
+void requireCascadeSupport(const TechniqueInfo& info, const ShadowSetup& setup);
 
 using TechniqueFactory = std::function<std::unique_ptr<ShadowTechnique>()>;
 

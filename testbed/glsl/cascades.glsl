@@ -1,0 +1,34 @@
+// The cascades of the run's shadow-map set-up (technique/shadow_setup.h, docs/cascades.md),
+// compiled in where TESTBED_CASCADES is defined (the cascade program of
+// render/shadow_map_screen_technique.h): each cascade's map is a layer of uShadowMaps, and
+// a receiver reads the map of the split its view depth, along the camera the maps were
+// fitted to, falls in. screen_pass.glsl sets gCascade before screenVisibility runs, so the
+// tests without a map (shadow_test.glsl, kernel.glsl) read the receiver's cascade.
+const int kMaxCascades = 4;  // technique/shadow_setup.h's kMaxCascades
+
+uniform sampler2DArray uShadowMaps;
+uniform int uCascadeCount;
+// World → each map's clip space, column-major, one map after another (Program::set takes
+// float arrays, so each matrix travels as its 16 floats).
+uniform float uCascadeMatrices[kMaxCascades * 16];
+uniform float uCascadeSplitFar[kMaxCascades];  // the far view depth of each split
+uniform vec3 uCascadeEye;      // the camera the maps were fitted to
+uniform vec3 uCascadeForward;  // its unit view direction
+
+int gCascade = 0;  // the receiver's cascade (screen_pass.glsl)
+
+mat4 cascadeViewProjection(int cascade) {
+  mat4 m;
+  for (int column = 0; column < 4; ++column)
+    for (int row = 0; row < 4; ++row) m[column][row] = uCascadeMatrices[cascade * 16 + column * 4 + row];
+  return m;
+}
+
+// The split of a receiver at world position `world`: the first whose far end lies at or
+// beyond its view depth; nearer than the first split, the first; beyond the last, the last.
+int cascadeOf(vec3 world) {
+  float depth = dot(world - uCascadeEye, uCascadeForward);
+  for (int i = 0; i < uCascadeCount - 1; ++i)
+    if (depth <= uCascadeSplitFar[i]) return i;
+  return uCascadeCount - 1;
+}

@@ -1,0 +1,57 @@
+#pragma once
+// The shadow-map set-up of a run, shared by every technique that supports it (docs/cascades.md):
+// how many maps (cascades) cover the camera's view, how its depth range is split among
+// them and how each map is fitted. `render` and `compare` take it as --cascades, --splits
+// and --fit (testbed/app/common_options.cpp); the harness hands it to the technique in
+// FrameInputs; the default, one map fitted to the scene, is the testbed's original set-up.
+#include <string>
+#include <vector>
+
+#include "testbed/scene/scene.h"
+
+namespace testbed {
+
+// How the camera's depth range [n, f] is split into m slices (Zhang et al., "Parallel-split
+// shadow maps for large-scale virtual environments", VRCIA 2006): uniform C_i = n + (f − n)·i/m,
+// logarithmic C_i = n·(f/n)^(i/m), practical λ·log + (1 − λ)·uniform.
+enum class SplitScheme { Uniform, Log, Practical };
+// How each map is fitted: Scene, the light's map fitted to the scene's bounds (one map
+// only); View, cropped to its frustum slice ∩ the scene each frame; Stable, a square
+// around the slice's bounding sphere with its origin snapped to whole texels, so that a
+// camera that only translates or rotates moves no texel (directional light only).
+enum class MapFit { Scene, View, Stable };
+
+// The most cascades a run may ask for: glsl/cascades.glsl's kMaxCascades, and at most
+// declaration.h's kMostTexturesOfASize layers of one array.
+inline constexpr int kMaxCascades = 4;
+
+struct ShadowSetup {
+  int cascades = 1;
+  SplitScheme splits = SplitScheme::Practical;
+  double lambda = 0.5;  // SplitScheme::Practical's λ
+  MapFit fit = MapFit::Scene;
+
+  // The testbed's original set-up: one map of the frame's light (the default path,
+  // unchanged bit for bit).
+  bool single() const { return cascades == 1 && fit == MapFit::Scene; }
+  std::string splitsWord() const;  // "uniform", "log", "pssm:0.5"
+  std::string fitWord() const;     // "scene", "view", "stable"
+  bool operator==(const ShadowSetup&) const = default;
+};
+
+// The set-up from the options' words; `fit` empty: scene for one cascade, view for more.
+// Throws InputError naming the option (--cascades, --splits, --fit) and the value.
+ShadowSetup parseShadowSetup(int cascades, const std::string& splits, const std::string& fit);
+// Throws InputError naming the option where the set-up is not one: cascades outside
+// 1..kMaxCascades, or several maps each fitted to the whole scene. parseShadowSetup and the
+// harness (validateSettings) both check through it.
+void checkShadowSetup(const ShadowSetup& setup);
+// Throws InputError where the set-up is undefined for the scene's light: a stable fit
+// snaps an orthographic map's origin, which a spot light's perspective map has no
+// world-fixed grid for.
+void validateShadowSetup(const ShadowSetup& setup, const LightDesc& light, const std::string& sceneFile);
+
+// The count + 1 split depths of `scheme` over [nearDepth, farDepth]: C_0 = n, C_m = f.
+std::vector<double> splitDepths(SplitScheme scheme, double lambda, double nearDepth, double farDepth, int count);
+
+}  // namespace testbed
