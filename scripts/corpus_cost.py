@@ -20,6 +20,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import metric_table  # noqa: E402
+from markdown_text import markdown_text  # noqa: E402
 from corpus_stats import REFERENCES, InputError, load_records  # noqa: E402
 
 # The costs, as derived figures the records carry (computed by the testbed, never here).
@@ -115,7 +116,7 @@ def markdown(tables, error_name, flagged, scene_count):
              "configuration with the least median error at no more median cost, and the configuration that wins most "
              "often scene by scene (least error at no more cost on that scene), with its share of the scenes.", ""]
     for scene, flag in sorted(flagged.items()):
-        lines.append(f"- excluded: scene {scene} ({flag})")
+        lines.append(f"- excluded: scene {markdown_text(scene)} ({flag})")
     if flagged:
         lines.append("")
     for cost_name, title, rows in tables:
@@ -125,9 +126,9 @@ def markdown(tables, error_name, flagged, scene_count):
                   "|---|---|---|---|---|---|---|---|---|"]
         for r in rows:
             share = "–" if r["scene_winner_share"] is None else f"{100 * r['scene_winner_share']:.0f} %"
-            lines.append(f"| {r['budget']} | {r['n']} | {number(r['budget_cost'])} | {number(r['budget_error'])} | "
-                         f"{r['best']} | {number(r['best_cost'])} | {number(r['best_error'])} | "
-                         f"{r['scene_winner'] or '–'} | {share} |")
+            lines.append(f"| {markdown_text(r['budget'])} | {r['n']} | {number(r['budget_cost'])} | {number(r['budget_error'])} | "
+                         f"{markdown_text(r['best'])} | {number(r['best_cost'])} | {number(r['best_error'])} | "
+                         f"{markdown_text(r['scene_winner'] or '–')} | {share} |")
         lines.append("")
     return "\n".join(lines)
 

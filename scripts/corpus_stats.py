@@ -24,6 +24,7 @@ from scipy import stats
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import metric_table  # noqa: E402
+from markdown_text import markdown_code, markdown_text  # noqa: E402
 
 REFERENCES = {"groundtruth", "area", "raycast"}
 BOOTSTRAP_RESAMPLES = 9999
@@ -265,6 +266,7 @@ def direction(value, reference):
 
 def finding(label, baseline, m, v):
     """The sentences that the figures of one technique against the baseline support."""
+    label, baseline = markdown_text(label), markdown_text(baseline)  # names from users' specs
     better = m["better"]
     worse = "higher" if better == "lower" else "lower"
     test = v["wilcoxon"]
@@ -319,7 +321,7 @@ def findings(results, baseline):
 
 def findings_markdown(sentences, baseline):
     lines = ["# Findings across scenes", "",
-             f"Written by scripts/corpus_stats.py from stats.json: each technique against `{baseline}`, paired by "
+             f"Written by scripts/corpus_stats.py from stats.json: each technique against {markdown_code(baseline)}, paired by "
              f"scene; \"evidence\" means a Holm-adjusted p below α = {ALPHA} (the family: the techniques compared "
              "on that metric).", ""]
     for name, per_metric in sentences.items():
@@ -331,7 +333,7 @@ def findings_markdown(sentences, baseline):
 
 def markdown(results, baseline, flagged, notes, metric_notes=None):
     lines = ["# Statistics across scenes", ""]
-    lines.append(f"Baseline of the paired comparison: `{baseline}`. Ratio: technique / baseline per scene "
+    lines.append(f"Baseline of the paired comparison: {markdown_code(baseline)}. Ratio: technique / baseline per scene "
                  "(scenes where the baseline is 0 left out of the ratio). Win: lower than the baseline (a tie counts "
                  f"half). p: {TEST_NAME} of the paired differences (exact for at most {EXACT_LIMIT} differences "
                  "without zeros or ties, else the normal approximation with tie correction: the method column says "
@@ -340,7 +342,7 @@ def markdown(results, baseline, flagged, notes, metric_notes=None):
                  "the figures support.")
     lines.append("")
     for scene, flag in sorted(flagged.items()):
-        lines.append(f"- excluded: scene {scene} ({flag})")
+        lines.append(f"- excluded: scene {markdown_text(scene)} ({flag})")
     for note in notes:
         lines.append(f"- note: {note}")
     if flagged or notes:
@@ -364,7 +366,7 @@ def markdown(results, baseline, flagged, notes, metric_notes=None):
                 method = "–" if test is None else test["method"] + (f" ({test['reason']})" if test["reason"] else "")
                 versus = [str(v["n"]), number(v["median_ratio"], 3), f"{100 * v['win_rate']:.0f} %",
                           number(v["wilcoxon_p"], 3), method, number(v.get("holm_p"), 3)]
-            lines.append(f"| {label} | {s['n']} | {number(s['median'])} | {number(s['q1'])}–{number(s['q3'])} | "
+            lines.append(f"| {markdown_text(label)} | {s['n']} | {number(s['median'])} | {number(s['q1'])}–{number(s['q3'])} | "
                          f"{number(s['mean'])} | {ci} | " + " | ".join(versus) + " |")
         lines.append("")
     return "\n".join(lines)
