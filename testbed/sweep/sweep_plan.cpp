@@ -1,8 +1,10 @@
 #include "testbed/sweep/sweep_plan.h"
 
-#include <charconv>
+#include <optional>
+#include <string_view>
 
 #include "testbed/core/error.h"
+#include "testbed/core/number_text.h"
 #include "testbed/technique/registry.h"
 
 namespace testbed {
@@ -136,13 +138,11 @@ SweepPlan planSweep(const SweepSpec& spec, const SweepOverrides& overrides) {
 Shard parseShard(const std::string& text) {
   Shard shard;
   const auto slash = text.find('/');
-  auto parse = [](std::string_view part, int& value) {
-    const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
-    return ec == std::errc() && end == part.data() + part.size() && !part.empty();
-  };
-  if (slash == std::string::npos || !parse(std::string_view(text).substr(0, slash), shard.index) ||
-      !parse(std::string_view(text).substr(slash + 1), shard.count) || shard.count < 1 || shard.count > 100000 ||
-      shard.index < 1 || shard.index > shard.count)
+  const auto index = wholeNumber<int>(std::string_view(text).substr(0, slash));
+  const auto count = slash == std::string::npos ? std::nullopt : wholeNumber<int>(std::string_view(text).substr(slash + 1));
+  if (index) shard.index = *index;
+  if (count) shard.count = *count;
+  if (!index || !count || shard.count < 1 || shard.count > 100000 || shard.index < 1 || shard.index > shard.count)
     throw InputError("--shard: expected K/N with 1 <= K <= N (e.g. 2/4), got '" + text + "'");
   return shard;
 }

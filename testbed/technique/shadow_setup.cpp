@@ -1,11 +1,11 @@
 #include "testbed/technique/shadow_setup.h"
 
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 
 #include "testbed/core/error.h"
 #include "testbed/core/messages.h"
+#include "testbed/core/number_text.h"
 #include "testbed/technique/light_crop.h"
 #include "testbed/technique/technique.h"
 
@@ -15,11 +15,10 @@ namespace {
 
 // λ of "pssm:λ": a plain decimal in [0, 1], all of the text.
 double parseLambda(const std::string& word, const std::string& text) {
-  double value = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || error != std::errc() || end != text.data() + text.size() || !(value >= 0 && value <= 1))
+  const auto value = wholeNumber<double>(text);
+  if (!value || !(*value >= 0 && *value <= 1))
     throw InputError("--splits: expected pssm:λ with λ in [0, 1], got '" + oneLine(word) + "'");
-  return value;
+  return *value;
 }
 
 }  // namespace
