@@ -14,9 +14,9 @@
 
 #include <gtest/gtest.h>
 
+#include "testbed/gl/shader_path.h"
 #include "testbed/harness/frame_runner.h"
 #include "tests/gl_fixture.h"
-#include "tests/shader_path_scope.h"
 
 namespace testbed {
 namespace {
@@ -91,18 +91,18 @@ TEST_P(SpirvPath, HardVisibilityIdenticalFilteredWithinTolerance) {
   RenderSettings settings = test::renderSettings(c.size, c.mapSize);
   settings.path = c.path;
   // Each runner's own programs (G-buffer, shadow map) are built as it is constructed.
-  const test::ShaderPathScope glslScope("glsl");
+  const ShaderPathScope glslScope("glsl");
   FrameRunner glsl(scene, settings);
   std::unique_ptr<FrameRunner> spirv;
   {
-    const test::ShaderPathScope spirvScope("spirv");
+    const ShaderPathScope spirvScope("spirv");
     spirv = std::make_unique<FrameRunner>(scene, settings);
   }
   const auto check = [&](const std::string& id, bool hard, const auto& run) {
     const ImageF a = run(glsl);
     ImageF b;
     {
-      const test::ShaderPathScope spirvScope("spirv");
+      const ShaderPathScope spirvScope("spirv");
       b = run(*spirv);
     }
     const Agreement agreement = compare(a, b);

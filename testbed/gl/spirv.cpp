@@ -59,7 +59,7 @@ Declaration declared(std::string_view text, std::string_view what) {
 }  // namespace
 
 ShaderPath shaderPath() {
-  const char* value = std::getenv("TESTBED_SHADER_PATH");
+  const char* value = std::getenv(kShaderPathVariable);
   const std::string_view path = value ? value : "";
   if (path.empty()) return ShaderPath::Glsl;
   if (const auto parsed = parseShaderPath(path)) return *parsed;

@@ -1,6 +1,7 @@
 // The SPIR-V compiler path: uniform locations assigned program-wide, programs built by
 // glslang and loaded through ARB_gl_spirv answering set()/location()/unsetUniforms() from
 // their own table, and glslang's errors naming the file.
+#include "testbed/gl/shader_path.h"
 #include "testbed/gl/spirv.h"
 
 #include <string>
@@ -11,7 +12,6 @@
 #include "testbed/gl/objects.h"
 #include "testbed/gl/shader_library.h"
 #include "tests/gl_fixture.h"
-#include "tests/shader_path_scope.h"
 
 namespace testbed {
 namespace {
@@ -45,21 +45,21 @@ TEST(SpirvLocations, RefusesWhatItCannotLocate) {
 
 TEST(SpirvPathChoice, ChosenByTheEnvironmentAndBadValuesAreInputErrors) {
   {
-    const test::ShaderPathScope scope("spirv");
+    const ShaderPathScope scope("spirv");
     EXPECT_EQ(shaderPath(), ShaderPath::Spirv);
   }
   {
-    const test::ShaderPathScope scope("");
+    const ShaderPathScope scope("");
     EXPECT_EQ(shaderPath(), ShaderPath::Glsl);
   }
-  const test::ShaderPathScope scope("spir-v");
+  const ShaderPathScope scope("spir-v");
   EXPECT_THROW(shaderPath(), InputError);
 }
 
 class SpirvPrograms : public ::testing::Test {
  protected:
   void SetUp() override { test::sharedContext(); }
-  const test::ShaderPathScope spirv_{"spirv"};
+  const ShaderPathScope spirv_{"spirv"};
 };
 
 // Uniforms of both stages, one of them dropped by the compiler: set() and location() find

@@ -15,28 +15,6 @@
 namespace testbed {
 namespace {
 
-constexpr const char* kShaderPathVariable = "TESTBED_SHADER_PATH";
-
-// Sets TESTBED_SHADER_PATH for a scope: every program built meanwhile (the runner's at
-// construction, the technique's at its first frame) takes that path. The variable is read
-// at each build (gl/shader_path.h), so one process can render both ways.
-class ShaderPathOverride {
- public:
-  explicit ShaderPathOverride(ShaderPath path) {
-    if (const char* value = std::getenv(kShaderPathVariable)) previous_ = value;
-    setenv(kShaderPathVariable, std::string(shaderPathName(path)).c_str(), 1);
-  }
-  ~ShaderPathOverride() {
-    if (previous_) setenv(kShaderPathVariable, previous_->c_str(), 1);
-    else unsetenv(kShaderPathVariable);
-  }
-  ShaderPathOverride(const ShaderPathOverride&) = delete;
-  ShaderPathOverride& operator=(const ShaderPathOverride&) = delete;
-
- private:
-  std::optional<std::string> previous_;
-};
-
 bool hasExtension(const char* name) {
   GLint count = 0;
   glGetIntegerv(GL_NUM_EXTENSIONS, &count);
@@ -174,7 +152,7 @@ StabilityReport measureStability(const Scene& scene, const RenderSettings& setti
     skipped.skipped = true;
     report.counts.push_back(skipped);
   } else {
-    const ShaderPathOverride scope(other);
+    const ShaderPathScope scope(other);
     report.counts.push_back(compareVisibility(pathChange, base, render(scene, settings, technique, parameters),
                                               judged, options.changeLimit));
   }
