@@ -64,4 +64,13 @@ Receivers receiversOf(const ImageF& visibility) {
   return receivers;
 }
 
+int differingPixels(const ImageF& a, const ImageF& b) {
+  int differing = 0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+    const float x = a.pixels[i], y = b.pixels[i];
+    differing += !(x == y || (std::isnan(x) && std::isnan(y)));
+  }
+  return differing;
+}
+
 }  // namespace testbed::test

@@ -30,6 +30,9 @@ struct Receivers {
 };
 Receivers receiversOf(const ImageF& visibility);
 
+// Pixels where two images of one size differ, bit for bit, NaN (background) equal to NaN.
+int differingPixels(const ImageF& a, const ImageF& b);
+
 // Expects every error metric of `m` to be 0: what a visibility compared with itself gives.
 void expectNoError(const ErrorMetrics& m);
 

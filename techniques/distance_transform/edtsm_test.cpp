@@ -110,12 +110,8 @@ TEST_F(Edtsm, WithoutPenumbraItIsRbsm) {
   const ImageF improved = run(runner, "smsr", {{"visibility", "improved"}}).visibility;
   for (const auto& [id, expected] : {std::pair{"edtsm", &conservative}, std::pair{"edtsm-star", &improved}}) {
     const ImageF v = run(runner, id, hard).visibility;
-    int differing = 0;
-    for (std::size_t i = 0; i < v.pixels.size(); ++i) {
-      const float a = v.pixels[i], b = expected->pixels[i];
-      differing += !(a == b || (std::isnan(a) && std::isnan(b)));
-    }
-    EXPECT_EQ(differing, 0) << id;
+    ASSERT_EQ(v.pixels.size(), expected->pixels.size()) << id;
+    EXPECT_EQ(test::differingPixels(v, *expected), 0) << id;
   }
 }
 

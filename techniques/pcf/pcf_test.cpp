@@ -36,14 +36,8 @@ TEST_F(PcfImage, KernelOneEqualsShadowMappingPixelForPixel) {
     const ImageF sm = runTechnique(runner, "sm").visibility;
     const ImageF pcf = runTechnique(runner, "pcf", {{"kernel", "1"}}).visibility;
     ASSERT_EQ(sm.pixels.size(), pcf.pixels.size());
-    int differing = 0, receivers = 0;
-    for (std::size_t i = 0; i < sm.pixels.size(); ++i) {
-      const float a = sm.pixels[i], b = pcf.pixels[i];
-      receivers += !std::isnan(a);
-      differing += !(a == b || (std::isnan(a) && std::isnan(b)));
-    }
-    EXPECT_EQ(differing, 0);
-    EXPECT_GT(receivers, 10000);
+    EXPECT_EQ(test::differingPixels(sm, pcf), 0);
+    EXPECT_GT(test::receiversOf(sm).count, 10000);
   }
 }
 
