@@ -50,8 +50,9 @@ TEST(Cascades, FourPssmCascadesBeatOneMapOnTheOutdoorScene) {
   EXPECT_LT(four.leakPct, one.leakPct / 3);
 }
 
-// pcf with one tap reads the receiver's cascade exactly as sm does: the shared lookup.
-TEST(Cascades, PcfKernelOneIsSmOnCascadesPixelForPixel) {
+// pcf with one tap reads the receiver's cascade exactly as sm does: the shared lookup (two
+// programs: bit for bit on llvmpipe, expectSameVisibilityAcrossPrograms's bounds elsewhere).
+TEST(Cascades, PcfKernelOneIsSmOnCascades) {
   sharedContext();
   const Scene scene = loadScene(kOutdoor / "sun_field.json");
   for (const char* fit : {"view", "stable"}) {
@@ -61,8 +62,7 @@ TEST(Cascades, PcfKernelOneIsSmOnCascadesPixelForPixel) {
     FrameRunner runner(scene, settings);
     const ImageF sm = runTechnique(runner, "sm").visibility;
     const ImageF pcf = runTechnique(runner, "pcf", {{"kernel", "1"}}).visibility;
-    ASSERT_EQ(sm.pixels.size(), pcf.pixels.size());
-    EXPECT_EQ(differingPixels(sm, pcf), 0);
+    expectSameVisibilityAcrossPrograms(sm, pcf, [&] { return groundTruthVisibility(runner); });
     EXPECT_GT(receiversOf(sm).fullyShadowed, 500);
   }
 }

@@ -4,11 +4,14 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <string_view>
 #include <utility>
 
 #include <gtest/gtest.h>
 
 #include "groundtruth/shadow_volumes.h"
+#include "testbed/harness/stability.h"
+#include "testbed/gl/gl.h"
 #include "testbed_test_paths.h"
 
 namespace testbed::test {
@@ -71,6 +74,32 @@ int differingPixels(const ImageF& a, const ImageF& b) {
     differing += !(x == y || (std::isnan(x) && std::isnan(y)));
   }
   return differing;
+}
+
+bool onLlvmpipe() {
+  sharedContext();
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return renderer && std::string_view(renderer).find("llvmpipe") != std::string_view::npos;
+}
+
+std::string differenceBeyondArithmetic(const ImageF& a, const ImageF& b, const ImageF& groundTruth) {
+  int maskDiffers = 0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i) maskDiffers += std::isnan(a.pixels[i]) != std::isnan(b.pixels[i]);
+  if (maskDiffers > 0) return std::to_string(maskDiffers) + " pixels are a receiver of one program only";
+  const StabilityOptions limits;
+  const StabilityCount count = compareVisibility("other program", a, b, farFromBoundary(groundTruth, limits.farPx),
+                                                 limits.changeLimit);
+  if (count.changed == 0) return "";
+  return std::to_string(count.changed) + " receivers far from a boundary changed, e.g. " + count.example;
+}
+
+void expectSameVisibilityAcrossPrograms(const ImageF& a, const ImageF& b,
+                                        const std::function<ImageF()>& groundTruth) {
+  ASSERT_EQ(a.pixels.size(), b.pixels.size());
+  if (onLlvmpipe())
+    EXPECT_EQ(differingPixels(a, b), 0) << "bit for bit on llvmpipe";
+  else
+    EXPECT_EQ(differenceBeyondArithmetic(a, b, groundTruth()), "");
 }
 
 }  // namespace testbed::test

@@ -1,9 +1,11 @@
 // The technique suite built by two front-ends: Mesa's GLSL compiler and Khronos' glslang to
 // SPIR-V loaded through ARB_gl_spirv (testbed/gl/spirv.h), on the bundled scenes. Every
 // program of a run — G-buffer, shadow map, the technique's passes, the ground truth — takes
-// the path of its runner. Hard visibility is the same arithmetic on the same inputs, so it
-// must be identical; filtered visibility may differ by how each front-end orders and
-// contracts floating-point operations, within the bounds below (docs/portability.md).
+// the path of its runner. Hard visibility is the same arithmetic on the same inputs: on
+// llvmpipe it is identical, and elsewhere the GL specification does not promise that of two
+// programs, so it is held to test::expectSameVisibilityAcrossPrograms's bounds there; filtered
+// visibility may differ by how each front-end orders and contracts floating-point
+// operations, within the bounds below (docs/portability.md).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -85,7 +87,7 @@ class SpirvPath : public ::testing::TestWithParam<Case> {
   }
 };
 
-TEST_P(SpirvPath, HardVisibilityIdenticalFilteredWithinTolerance) {
+TEST_P(SpirvPath, HardVisibilitySameFilteredWithinTolerance) {
   const Case& c = GetParam();
   const Scene scene = test::bundledScene(c.scene);
   RenderSettings settings = test::renderSettings(c.size, c.mapSize);
@@ -98,6 +100,7 @@ TEST_P(SpirvPath, HardVisibilityIdenticalFilteredWithinTolerance) {
     const ShaderPathScope spirvScope("spirv");
     spirv = std::make_unique<FrameRunner>(scene, settings);
   }
+  ImageF truth;  // the GLSL path's ground truth, the first check's image
   const auto check = [&](const std::string& id, bool hard, const auto& run) {
     const ImageF a = run(glsl);
     ImageF b;
@@ -109,7 +112,11 @@ TEST_P(SpirvPath, HardVisibilityIdenticalFilteredWithinTolerance) {
     report(c, id, agreement);
     EXPECT_GT(agreement.receivers, 0) << id;
     EXPECT_EQ(agreement.maskDiffers, 0) << id;
-    if (hard) EXPECT_EQ(agreement.differing, 0) << id << ": max " << agreement.maxAbs;
+    if (truth.pixels.empty()) truth = a;
+    if (hard) {
+      SCOPED_TRACE(id);
+      test::expectSameVisibilityAcrossPrograms(a, b, [&] { return truth; });
+    }
     else if (id != "msm") EXPECT_LE(agreement.maxAbs, kFilteredMaxDifference) << id;
     else {
       EXPECT_LE(agreement.meanAbs, kMomentMeanDifference) << id;

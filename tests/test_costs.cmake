@@ -7,14 +7,14 @@
 # built (no viewer, no Embree) is ignored.
 set(testbed_test_costs
   Slurm.CorpusSweepKilledShardResumesAndMergesAsAnUninterruptedRun 35
-  Edtsm.PaperPathWithTheBandedEdtMatchesTheFastPathBitForBit 34
+  Edtsm.PaperPathWithTheBandedEdtMatchesTheFastPath 34
   RevectorizationGlsl.RpcfWithKernelOneEqualsItsBase 32
   RevectorizationScene.AgainstShadowVolumesOnTheBundledScenes 32
   HostileSweep.SpecsAreReadStrictlyAndCappedBeforeAnythingRenders 31
-  Paths.BothPathsGiveBitIdenticalVisibility 30
+  Paths.BothPathsGiveTheSameVisibility 30
   CliSweep.AKilledSweepResumesWhereItStopped 24
   PrefilteredScenes.VisibilityIsFiniteOnEveryBundledScene 22
-  Edtsm.FastPathMatchesTheReferencePipelineBitForBit 20
+  Edtsm.FastPathMatchesTheReferencePipeline 20
   RevectorizationGlsl.EveryDepthLayoutGivesTheSameNumbers 18
   RevectorizationGlsl.GatheredClassificationEqualsFetched 14
   RevectorizationGlsl.WidestRpcfKernelsAreTheMeanOfTheirTaps 14

@@ -180,6 +180,21 @@ std::vector<Edge> staircases() {
 int strictlyBetween(const std::vector<float>& values) {
   return int(std::count_if(values.begin(), values.end(), [](float v) { return v > 0.0f && v < 1.0f; }));
 }
+// Two code paths that compute one function (RPCF's 1×1 kernel and its base): bit for bit on
+// llvmpipe, measured; the GL specification does not promise it of different code
+// (test::expectSameVisibilityAcrossPrograms says what it does promise), so elsewhere at most
+// 1 % of the points may differ, by a rounding tie in a depth test, and only by more than 0.01.
+void expectSameValuesOnBothPaths(const std::vector<float>& a, const std::vector<float>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  if (test::onLlvmpipe()) {
+    EXPECT_EQ(a, b);
+    return;
+  }
+  std::size_t off = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) off += !(std::abs(a[i] - b[i]) <= 0.01f);
+  EXPECT_LE(off, a.size() / 100);
+}
+
 int outsideTheUnitInterval(const std::vector<float>& values) {
   return int(std::count_if(values.begin(), values.end(), [](float v) { return !(v >= 0.0f && v <= 1.0f); }));
 }
@@ -263,9 +278,9 @@ TEST(RevectorizationGlsl, StraightRunsKeepTheShadowTest) {
     p.upload(occluded);
     const auto points = grid(0, 0, kSize, kSize);
     const auto sm = p.run(kShadowTest, points);
-    EXPECT_EQ(p.run(kSmsr, points), sm);
-    EXPECT_EQ(p.run(kSmsr, points, {.improved = true}), sm);
-    EXPECT_EQ(p.run(kRsmss, points), sm);
+    expectSameValuesOnBothPaths(p.run(kSmsr, points), sm);
+    expectSameValuesOnBothPaths(p.run(kSmsr, points, {.improved = true}), sm);
+    expectSameValuesOnBothPaths(p.run(kRsmss, points), sm);
   }
 }
 
@@ -359,7 +374,7 @@ TEST(RevectorizationGlsl, MaxSearchCutsOffLongEdges) {
   for (const bool improved : {false, true}) {
     SCOPED_TRACE(improved ? "improved" : "conservative");
     const auto sm = p.run(kShadowTest, far);
-    EXPECT_EQ(p.run(kSmsr, far, {.improved = improved, .maxSearch = 16}), sm);
+    expectSameValuesOnBothPaths(p.run(kSmsr, far, {.improved = improved, .maxSearch = 16}), sm);
     EXPECT_EQ(p.run(kSmsr, nearEnd, {.improved = improved, .maxSearch = 16})[0], 0.0f);
   }
   // With a long enough search the far texels see the end and the conservative line
@@ -414,7 +429,7 @@ TEST(RevectorizationGlsl, GatheredClassificationEqualsFetched) {
   forEachStaircase(p, [&](const Edge&) {
     for (const bool bothSides : {false, true}) {
       const auto gathered = p.run(kClassify, points, {.improved = bothSides});
-      EXPECT_EQ(gathered, p.run(kClassifyFetched, points, {.improved = bothSides}));
+      expectSameValuesOnBothPaths(gathered, p.run(kClassifyFetched, points, {.improved = bothSides}));
       EXPECT_GT(std::count_if(gathered.begin(), gathered.end(), [](float v) { return v >= 32.0f; }), 0);
     }
   });
@@ -435,7 +450,8 @@ TEST(RevectorizationGlsl, GatheredRpcfRowsEqualFetched) {
       for (int row = 0; row < k + 2; ++row) {
         const Options o{.kernel = k, .row = row};
         const auto gathered = p.run(kBlockRow, points, o);
-        EXPECT_EQ(gathered, p.run(kFetchedRow, points, o)) << "row " << row;
+        SCOPED_TRACE("row " + std::to_string(row));
+        expectSameValuesOnBothPaths(gathered, p.run(kFetchedRow, points, o));
         const float all = float((1 << (k + 2)) - 1);
         partial += int(std::count_if(gathered.begin(), gathered.end(), [&](float v) { return v > 0.0f && v < all; }));
       }
@@ -461,7 +477,7 @@ TEST(RevectorizationGlsl, RpcfRegularBlockFromTheDiagonalEqualsAllTaps) {
   for (const int k : {1, 3, 5, 7}) {
     SCOPED_TRACE("kernel " + std::to_string(k));
     const auto diagonal = p.run(kRegularBlock, points, {.kernel = k});
-    EXPECT_EQ(diagonal, p.run(kRegularBlockPlain, points, {.kernel = k}));
+    expectSameValuesOnBothPaths(diagonal, p.run(kRegularBlockPlain, points, {.kernel = k}));
     EXPECT_GT(std::count(diagonal.begin(), diagonal.end(), 1.0f), 0);
     EXPECT_GT(std::count(diagonal.begin(), diagonal.end(), 0.0f), 0);
   }
@@ -479,9 +495,10 @@ TEST(RevectorizationGlsl, RpcfScreenPassEqualsThePlainLoop) {
     for (const int k : {3, 5}) {
       SCOPED_TRACE("kernel " + std::to_string(k));
       for (const bool improved : {false, true})
-        EXPECT_EQ(p.run(kRpcfSmsrScreen, points, {.improved = improved, .kernel = k}),
-                  p.run(kRpcfSmsr, points, {.improved = improved, .kernel = k}));
-      EXPECT_EQ(p.run(kRpcfRsmssScreen, points, {.kernel = k}), p.run(kRpcfRsmss, points, {.kernel = k}));
+        expectSameValuesOnBothPaths(p.run(kRpcfSmsrScreen, points, {.improved = improved, .kernel = k}),
+                                    p.run(kRpcfSmsr, points, {.improved = improved, .kernel = k}));
+      expectSameValuesOnBothPaths(p.run(kRpcfRsmssScreen, points, {.kernel = k}),
+                                  p.run(kRpcfRsmss, points, {.kernel = k}));
     }
   });
 }
@@ -511,21 +528,21 @@ TEST(RevectorizationGlsl, EveryDepthLayoutGivesTheSameNumbers) {
       SCOPED_TRACE("function " + std::to_string(int(function)));
       const auto reference = texture.run(function, points, o);
       EXPECT_GT(strictlyBetween(reference) + int(std::count(reference.begin(), reference.end(), 0.0f)), 0);
-      EXPECT_EQ(blocks.run(function, points, o), reference);
-      EXPECT_EQ(texels.run(function, points, o), reference);
+      expectSameValuesOnBothPaths(blocks.run(function, points, o), reference);
+      expectSameValuesOnBothPaths(texels.run(function, points, o), reference);
     }
   }
 }
 
-// RPCF with a 1×1 kernel is its base function bit for bit (eqs. 2 and 3).
+// RPCF with a 1×1 kernel is its base function (eqs. 2 and 3): bit for bit on llvmpipe.
 TEST(RevectorizationGlsl, RpcfWithKernelOneEqualsItsBase) {
   Probe& p = probe();
   const auto points = grid(0, 0, kSize, kSize);
   forEachStaircase(p, [&](const Edge&) {
     for (const bool improved : {false, true})
-      EXPECT_EQ(p.run(kRpcfSmsr, points, {.improved = improved, .kernel = 1}),
-                p.run(kSmsr, points, {.improved = improved}));
-    EXPECT_EQ(p.run(kRpcfRsmss, points, {.kernel = 1}), p.run(kRsmss, points));
+      expectSameValuesOnBothPaths(p.run(kRpcfSmsr, points, {.improved = improved, .kernel = 1}),
+                                  p.run(kSmsr, points, {.improved = improved}));
+    expectSameValuesOnBothPaths(p.run(kRpcfRsmss, points, {.kernel = 1}), p.run(kRsmss, points));
     // A wider kernel filters: values strictly between 0 and 1 appear.
     EXPECT_GT(strictlyBetween(p.run(kRpcfSmsr, points, {.kernel = 3})), 0);
   });
@@ -563,7 +580,7 @@ TEST(RevectorizationGlsl, WidestRpcfKernelsAreTheMeanOfTheirTaps) {
         const Options o{.improved = v.improved, .kernel = k};
         const std::vector<float> atTaps = p.run(v.base, taps, o);
         const std::vector<float> plain = p.run(v.plain, points, o);
-        EXPECT_EQ(p.run(v.screen, points, o), plain);
+        expectSameValuesOnBothPaths(p.run(v.screen, points, o), plain);
         int partial = 0;
         for (std::size_t i = 0; i < points.size(); ++i) {
           float sum = 0.0f;
