@@ -97,7 +97,7 @@ TEST(Slurm, CorpusSweepKilledShardResumesAndMergesAsAnUninterruptedRun) {
                                << readFile(cluster.dir / "slurmd.log");
   // The job array's tasks see the submitter's environment: the gate's folder, and a time
   // limit that ends a shard left waiting at the gate if the test cannot.
-  SweepGate gate(tmp / "gate", "gate-1");  // shard 1's only: array task 1
+  TechniqueGate gate(tmp / "gate", "gate-1");  // shard 1's only: array task 1
   const RunOptions slurm = {.env = {{"SLURM_CONF", (cluster.dir / "slurm.conf").string()},
                                     {"TESTBED_BINARY", TESTBED_BINARY},
                                     {"TESTBED_TEST_GATE", (tmp / "gate").string()},

@@ -284,13 +284,13 @@ TEST(CliSweep, AKilledSweepResumesWhereItStopped) {
   const std::string spec = (tmp / "study.json").string(), out = (tmp / "out").string();
   // Killed (SIGTERM, as Slurm's scancel) while it waits at the gate of its first test-gate
   // cell (tests/gate_plugin): the cells before it are on disk, the rest are not.
-  SweepGate gate(tmp / "gate", "gate");
-  const std::string script = "\"$0\" sweep --spec \"$1\" --plugin \"$3\" --no-plot --out \"$2\" 2>\"$2.log\" & pid=$!; "
-                             "until [ -e \"$4\" ]; do kill -0 $pid 2>/dev/null || exit 3; sleep 0.05; done; "
-                             "kill -TERM $pid; wait $pid; exit 0";
-  const RunResult killed = runCommand({"sh", "-c", script, TESTBED_BINARY, spec, out, TESTBED_GATE_PLUGIN, gate.reached().string()},
-                                      {.env = {{"TESTBED_TEST_GATE", (tmp / "gate").string()}}});
-  ASSERT_EQ(killed.exitCode, 0) << killed.describe() << readFile(out + ".log");
+  TechniqueGate gate(tmp / "gate", "gate");
+  {
+    BackgroundRun sweep({TESTBED_BINARY, "sweep", "--spec", spec, "--plugin", TESTBED_GATE_PLUGIN, "--no-plot", "--out", out},
+                        {{"TESTBED_TEST_GATE", (tmp / "gate").string()}}, out + ".log");
+    ASSERT_TRUE(gate.waitUntilReached([&] { return sweep.ended(); })) << readFile(out + ".log");
+    sweep.stop(SIGTERM);
+  }
   ASSERT_FALSE(fs::exists(tmp / "out" / "records.json")) << "the sweep went past the gate";
   gate.open();
   // One finished cell edited: it must run again, not be trusted.

@@ -6,11 +6,12 @@
 //
 // The test sets TESTBED_TEST_GATE to a folder. A process's gate is the file
 // `gate-K` there, K being $SLURM_ARRAY_TASK_ID (one gate per shard of a job array), or
-// `gate` outside Slurm. If that file is a FIFO the technique, at its first frame, creates
-// `<gate>.reached` (written whole, then renamed into place) and opens the FIFO for reading,
-// which blocks until a writer opens it: the test then cancels the process (or, cleaning up
-// after a failure, opens the FIFO to release it). With no variable, or no FIFO at the path,
-// the technique is plain `sm`.
+// `gate` outside Slurm. If that file is a FIFO the technique, at its first frame, writes its
+// process id into the FIFO `<gate>.reached` (whose read end the test holds, so the test's
+// wait wakes on it: tests/technique_gate.h) and opens the gate for reading, which blocks
+// until a writer opens it: the test then cancels the process (or, cleaning up after a
+// failure, opens the gate to release it). With no variable, or no FIFO at the path, the
+// technique is plain `sm`.
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -18,7 +19,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <string>
 
@@ -47,9 +47,13 @@ void passGate() {
   const fs::path gate = gatePath();
   struct stat info {};
   if (gate.empty() || ::stat(gate.c_str(), &info) != 0 || !S_ISFIFO(info.st_mode)) return;
-  const fs::path reached = gate.string() + ".reached", staged = gate.string() + ".reached.tmp";
-  std::ofstream(staged) << ::getpid() << "\n";
-  fs::rename(staged, reached);
+  const fs::path reached = gate.string() + ".reached";
+  const int announce = ::open(reached.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);  // ENXIO: nobody watches
+  if (announce >= 0) {
+    const std::string line = std::to_string(::getpid()) + "\n";
+    [[maybe_unused]] const auto written = ::write(announce, line.data(), line.size());
+    ::close(announce);
+  }
   const int fd = ::open(gate.c_str(), O_RDONLY | O_CLOEXEC);  // blocks until a writer opens it
   if (fd >= 0) {
     char byte;
