@@ -2,9 +2,10 @@
 """Adds a corpus run's statistics and equal-cost view to its sweep's index.html
 (docs/corpus.md "What results/corpus shows"): the page's data (the JSON that
 testbed/report/html/report.js renders) gains, before the sweep's own sections, the
-statistics across scenes (stats/stats.json) as tables with their box plots, a table of
-every scene's error per technique whose entries link to the cell's record (#cell-N), the
-equal-cost tables (cost/cost.json) with their Pareto plots, and links to the files. Run
+statistics across scenes (stats/stats.json) as tables, a matrix of every scene's error per
+technique coloured by value whose entries link to the cell's record (#cell-N, in the
+sweep's folded cell table), the statistics' box plots, the equal-cost tables
+(cost/cost.json) with their Pareto plots, and links to the files. Run
 again on the same folder, it replaces what it added.
 
 usage: scripts/corpus_page.py DIR   (DIR: what scripts/corpus.sh writes; index.html is
@@ -34,9 +35,12 @@ def cell(text, value=None, href=""):
     return c
 
 
-def table(title, notes, columns, rows):
-    return {"type": "table", "title": title, "notes": notes,
-            "columns": [{"heading": h, "numeric": n} for h, n in columns], "rows": rows}
+def table(title, notes, columns, rows, heat=False):
+    t = {"type": "table", "title": title, "notes": notes,
+         "columns": [{"heading": h, "numeric": n} for h, n in columns], "rows": rows}
+    if heat:
+        t["heat"] = True
+    return t
 
 
 def number(value, digits=4):
@@ -52,8 +56,10 @@ def read_json(path):
 
 
 def stats_sections(folder, stats, shown):
-    """The statistics' tables of the metrics `shown` (ids, in the metric table's order)."""
-    sections = []
+    """The statistics' tables of the metrics `shown` (ids, in the metric table's order), and
+    apart from them their box plots: the tables come first on the page, the plots after the
+    per-scene matrices."""
+    sections, figures = [], []
     excluded = stats.get("excluded", {})
     for metric in shown:
         per_label = stats["metrics"].get(metric)
@@ -81,9 +87,9 @@ def stats_sections(folder, stats, shown):
                                ("mean 95 % CI", True), ("ratio to " + stats["baseline"], True), ("win rate", True),
                                ("Wilcoxon p", True)], rows))
         if os.path.isfile(os.path.join(folder, "stats", metric + ".png")):
-            sections.append({"type": "figure", "title": f"{metric} per scene (box: quartiles; points: scenes)",
-                             "src": f"stats/{metric}.png", "href": f"stats/{metric}.png"})
-    return sections
+            figures.append({"type": "figure", "title": f"{metric} per scene (box: quartiles; points: scenes)",
+                            "src": f"stats/{metric}.png", "href": f"stats/{metric}.png"})
+    return sections, figures
 
 
 def scenes_section(records, stats, metric="mismatch_pct"):
@@ -108,9 +114,10 @@ def scenes_section(records, stats, metric="mismatch_pct"):
         rows.append({"cells": row})
     where = f" at shadow map {size}²" if size else ""
     return table(f"Every scene: {metric}{where}",
-                 ["One row per scene (its name links to the scene file); each entry links to its cell's record "
-                  "below. Flagged scenes are left out."],
-                 [("scene", False)] + [(label, True) for label in labels], rows)
+                 ["Scenes × techniques, coloured by the error on one scale for the whole matrix (green: lower, red: "
+                  "higher; logarithmic where it spans more than two decades). A scene's name links to its file, an "
+                  "entry to its cell's record in the folded cell table below. Flagged scenes are left out."],
+                 [("scene", False)] + [(label, True) for label in labels], rows, heat=True)
 
 
 def cost_sections(cost, folder="cost"):
@@ -168,8 +175,9 @@ def main(argv):
         with open(os.path.join(folder, "command.txt"), encoding="utf-8") as f:
             notes += [line.strip() for line in f if line.strip()]
     notes.append(f"Corpus: {len(manifest.get('scenes', []))} scenes, seed {manifest.get('seed')} (scenes/manifest.json).")
-    added = stats_sections(folder, stats, shown) + [scenes_section(records, stats)] + \
-        [scenes_section(records, stats, name) for name in soft] + cost_sections(cost)
+    stats_tables, box_plots = stats_sections(folder, stats, shown)
+    added = stats_tables + [scenes_section(records, stats)] + \
+        [scenes_section(records, stats, name) for name in soft] + box_plots + cost_sections(cost)
     for name, soft_cost in soft_costs:
         added += cost_sections(soft_cost, name)
     added.append({"type": "links", "title": "Corpus files", "items": [

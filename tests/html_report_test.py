@@ -185,6 +185,31 @@ class HtmlReports(unittest.TestCase):
         self.assertTrue(self.browser.find_elements(By.CSS_SELECTOR, "img[src^='cost/']"), "no Pareto plots")
         self.assertTrue(self.browser.find_elements(By.CSS_SELECTOR, "img[src^='cost-soft_rmse/']"), "no soft Pareto plots")
 
+    def test_corpus_matrix_is_coloured_and_its_links_unfold_the_cell_table(self):
+        self.open("corpus", VIEWPORTS[0])
+        matrix = self.browser.find_element(By.XPATH, "//section[h2[starts-with(., 'Every scene: mismatch_pct')]]")
+        colours = {td.value_of_css_property("background-color")
+                   for td in matrix.find_elements(By.CSS_SELECTOR, "td.num")}
+        self.assertGreaterEqual(len(colours), 2, "matrix entries share one colour")
+        folded = self.browser.find_element(By.CSS_SELECTOR, "details.folded")
+        self.assertFalse(folded.get_property("open"), "the cell table starts folded")
+        link = matrix.find_element(By.CSS_SELECTOR, "a[href^='#cell-']")
+        target = link.get_attribute("href").split("#")[1]
+        link.click()
+        WebDriverWait(self.browser, 10).until(lambda b: b.find_element(By.ID, target).is_displayed())
+        self.assertTrue(folded.get_property("open"))
+        # The filter keeps the rows that hold every word typed.
+        rows = folded.find_elements(By.CSS_SELECTOR, "tbody tr")
+        box = folded.find_element(By.CSS_SELECTOR, "input.filter")
+        box.send_keys("pcf 128")
+        shown = [r for r in rows if r.is_displayed()]
+        self.assertTrue(shown and len(shown) < len(rows), f"{len(shown)} of {len(rows)} rows shown")
+        for row in shown:
+            self.assertIn("pcf", row.text)
+            self.assertIn("128", row.text)
+        self.screenshot("corpus-matrix", VIEWPORTS[0])
+        self.assert_clean("corpus after unfolding and filtering")
+
     def test_hostile_names_stay_data(self):
         for run, expected in (("hostile-compare", "wall " + HOSTILE), ("hostile-sweep", "row " + HOSTILE)):
             with self.subTest(run=run):

@@ -147,10 +147,14 @@ json htmlRow(const json& cells, const std::string& id) {
 }
 
 json htmlTable(const std::string& title, const std::vector<std::string>& notes, const std::vector<HtmlColumn>& columns,
-               const json& rows) {
+               const json& rows, const HtmlTableStyle& style) {
   json heads = json::array();
   for (const HtmlColumn& column : columns) heads.push_back({{"heading", column.heading}, {"numeric", column.numeric}});
-  return {{"type", "table"}, {"title", title}, {"notes", notes}, {"columns", heads}, {"rows", rows}};
+  json table = {{"type", "table"}, {"title", title}, {"notes", notes}, {"columns", heads}, {"rows", rows}};
+  if (style.heat) table["heat"] = true;
+  if (style.filter) table["filter"] = true;
+  if (style.collapsed) table["collapsed"] = true;
+  return table;
 }
 
 json htmlFigure(const std::string& title, const std::string& src, const std::string& href) {
@@ -314,8 +318,9 @@ std::string sweepEntryText(const nlohmann::json& table, const nlohmann::json& ro
 }
 
 nlohmann::json sweepRecordsTable(const std::vector<Record>& records) {
-  std::vector<HtmlColumn> columns = {{"cell", true},     {"scene", false}, {"technique", false}, {"parameters", false},
-                                     {"size", false},    {"shadow map", true}, {"depth", false}};
+  // The parameters last: their JSON is long, and the size and error columns stay on screen.
+  std::vector<HtmlColumn> columns = {{"cell", true}, {"scene", false},      {"technique", false},
+                                     {"size", false}, {"shadow map", true}, {"depth", false}};
   std::vector<const Metric*> metrics;
   for (const Metric& m : metricTable())
     if (m.shownIn(kReportColumn) && !m.path.empty()) {
@@ -327,16 +332,21 @@ nlohmann::json sweepRecordsTable(const std::vector<Record>& records) {
     const std::string cell = r.cell ? std::to_string(*r.cell) : "";
     nlohmann::json cells = nlohmann::json::array(
         {htmlCell(cell, r.cell ? std::optional<double>(double(*r.cell)) : std::nullopt), htmlCell(r.scene),
-         htmlCell(r.technique), htmlCell(r.params.empty() ? "" : r.params.dump()),
-         htmlCell(std::to_string(r.width) + "×" + std::to_string(r.height)), htmlCell(std::to_string(r.shadowMap) + "²", r.shadowMap),
-         htmlCell(r.depthFormat)});
+         htmlCell(r.technique), htmlCell(std::to_string(r.width) + "×" + std::to_string(r.height)),
+         htmlCell(std::to_string(r.shadowMap) + "²", r.shadowMap), htmlCell(r.depthFormat)});
     for (const Metric* m : metrics) {
       const auto value = m->value(r, nullptr);
       cells.push_back(htmlCell(formatFixed(value, m->digits), value));
     }
+    cells.push_back(htmlCell(r.params.empty() ? "" : r.params.dump()));
     rows.push_back(htmlRow(cells, cell.empty() ? "" : "cell-" + cell));
   }
-  return htmlTable("Cells", {"Every cell's record (records.json); a table entry links to its cell here."}, columns, rows);
+  columns.push_back({"parameters", false});
+  return htmlTable("Cells",
+                   {"Every cell's record (records.json), " + std::to_string(records.size()) +
+                    " rows, folded: a table entry's link unfolds it at its cell; the filter keeps rows holding every "
+                    "word typed (a scene, a technique, a map size)."},
+                   columns, rows, {.filter = true, .collapsed = true});
 }
 
 }  // namespace

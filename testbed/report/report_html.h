@@ -26,9 +26,15 @@ struct HtmlColumn {
   std::string heading;
   bool numeric = false;
 };
+// How report.js shows a table beyond sorting: entries coloured by value on one scale (lower
+// green, higher red), a row filter, folded away until opened or a link names one of its rows.
+struct HtmlTableStyle {
+  bool heat = false, filter = false, collapsed = false;
+};
 // Sections of a page, rendered in order by report.js.
 nlohmann::json htmlTable(const std::string& title, const std::vector<std::string>& notes,
-                         const std::vector<HtmlColumn>& columns, const nlohmann::json& rows);
+                         const std::vector<HtmlColumn>& columns, const nlohmann::json& rows,
+                         const HtmlTableStyle& style = {});
 // A row of htmlTable; `id` makes it a link target (#id).
 nlohmann::json htmlRow(const nlohmann::json& cells, const std::string& id = "");
 // A figure from a file beside index.html (hidden when the file is missing).

@@ -27,7 +27,38 @@
     return box;
   }
 
+  // Entries coloured by value, one scale for the whole table (lower is better: green to red),
+  // logarithmic where the values span more than two decades: errors across scenes do.
+  function colourByValue(rows, section) {
+    const values = [];
+    for (const r of rows) r.cells.forEach((c, i) => { if (section.columns[i].numeric && Number.isFinite(c.v)) values.push(c.v); });
+    if (values.length < 2) return;
+    const low = Math.min(...values);
+    const high = Math.max(...values);
+    const logarithmic = low > 0 && high / low > 100;
+    const position = (v) => (logarithmic ? Math.log(v / low) / Math.log(high / low) : (v - low) / (high - low || 1));
+    for (const r of rows) {
+      r.cells.forEach((c, i) => {
+        if (!section.columns[i].numeric || !Number.isFinite(c.v)) return;
+        r.tr.children[i].style.background = 'hsl(' + Math.round(120 * (1 - position(c.v))) + ', 65%, 82%)';
+      });
+    }
+  }
+
+  // Rows shown only where every word typed is in their text.
+  function filterBox(rows) {
+    const input = el('input', { type: 'search', class: 'filter', placeholder: 'filter rows: words that must all appear' });
+    for (const r of rows) r.text = r.cells.map((c) => c.t).join(' ').toLowerCase();
+    input.addEventListener('input', () => {
+      const words = input.value.toLowerCase().split(/\s+/).filter(Boolean);
+      for (const r of rows) r.tr.hidden = !words.every((w) => r.text.includes(w));
+    });
+    return input;
+  }
+
   // A table whose columns sort on a click: numbers by value (missing ones last), text as text.
+  // `heat` colours its entries by value, `filter` adds a row filter, `collapsed` folds it away
+  // (a link to one of its rows unfolds it: revealTarget).
   function table(section) {
     const head = el('tr');
     const body = el('tbody');
@@ -65,9 +96,28 @@
       });
       head.appendChild(th);
     });
+    if (section.heat) colourByValue(rows, section);
+    const content = el('div', {}, section.filter ? filterBox(rows) : null,
+                       el('div', { class: 'scroll' }, el('table', { class: 'records' }, el('thead', {}, head), body)));
     const box = el('section', {}, heading(section), notes(section));
-    box.appendChild(el('div', { class: 'scroll' }, el('table', { class: 'records' }, el('thead', {}, head), body)));
+    if (!section.collapsed) box.appendChild(content);
+    else box.appendChild(el('details', { class: 'folded' }, el('summary', { text: rows.length + ' rows (click to fold or unfold)' }), content));
     return box;
+  }
+
+  // The row a #link names, made visible: its folded table unfolded, a filter hiding it cleared.
+  function revealTarget() {
+    const id = decodeURIComponent(location.hash.slice(1));
+    const target = id && document.getElementById(id);
+    if (!target) return;
+    const folded = target.closest('details');
+    if (folded) folded.open = true;
+    if (target.hidden) {
+      const filter = target.closest('section').querySelector('input.filter');
+      filter.value = '';
+      filter.dispatchEvent(new Event('input'));
+    }
+    target.scrollIntoView({ block: 'center' });
   }
 
   function figure(section) {
@@ -345,4 +395,6 @@
   main.appendChild(el('h1', { text: page.title }));
   for (const line of page.notes || []) main.appendChild(el('p', { class: 'note', text: line }));
   for (const section of page.sections) main.appendChild(renderers[section.type](section));
+  window.addEventListener('hashchange', revealTarget);
+  revealTarget();
 })();
