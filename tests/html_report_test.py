@@ -3,7 +3,8 @@
 python3-selenium and chromium-driver; started and stopped here): a tiny compare, a tiny
 compare --frames, a tiny sweep and a tiny scripts/corpus.sh each write one, opened over file:// it logs no console
 error, asks for nothing but file: and data: URLs, and its screenshots are not blank; on
-compare's page a key press flips the viewer between the technique and the reference. A
+compare's page a key press flips the viewer between the technique and the reference; on
+compare --frames' page keys step the frame viewer, flip it and show the error map. A
 compare and a sweep whose scene name, labels and --out folder hold "<!--<script>" and
 "</script>" write pages whose data still parses and whose report script still runs.
 
@@ -23,6 +24,7 @@ from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import WebDriverWait
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -209,6 +211,30 @@ class HtmlReports(unittest.TestCase):
             self.assertIn("128", row.text)
         self.screenshot("corpus-matrix", VIEWPORTS[0])
         self.assert_clean("corpus after unfolding and filtering")
+
+    def test_motion_frames_step_flip_and_show_the_error_map(self):
+        self.open("sequence", VIEWPORTS[0])
+        viewer = self.browser.find_element(By.CSS_SELECTOR, "section.frame-viewer")
+        canvas = viewer.find_element(By.CSS_SELECTOR, ".frame-pane canvas")
+        WebDriverWait(self.browser, 10).until(lambda b: b.execute_script(
+            "return [...document.images].filter(i => i.src.includes('_frames_')).every(i => i.complete)"))
+        showing = lambda: viewer.get_attribute("data-showing")
+        self.assertEqual(showing(), "sm@0")
+        first = canvas.screenshot_as_png
+        self.assertGreater(variance_of(first), 50.0, "the first frame looks blank")
+        viewer.click()
+        keys = ActionChains(self.browser)
+        keys.send_keys_to_element(viewer, Keys.ARROW_RIGHT).perform()
+        self.assertEqual(showing(), "sm@1")
+        self.assertNotEqual(canvas.screenshot_as_png, first, "the next frame of a spinning occluder is the same image")
+        ActionChains(self.browser).send_keys_to_element(viewer, "e").perform()
+        self.assertEqual(showing(), "sm:error@1")
+        ActionChains(self.browser).send_keys_to_element(viewer, "f").perform()
+        self.assertEqual(showing(), "groundtruth:error@1")
+        ActionChains(self.browser).send_keys_to_element(viewer, Keys.END).perform()
+        self.assertEqual(showing(), "groundtruth:error@2")
+        self.screenshot("sequence-frames", VIEWPORTS[0])
+        self.assert_clean("sequence after stepping")
 
     def test_hostile_names_stay_data(self):
         for run, expected in (("hostile-compare", "wall " + HOSTILE), ("hostile-sweep", "row " + HOSTILE)):

@@ -16,6 +16,7 @@
 #include "testbed/gl/context.h"
 #include "testbed/io/video_writer.h"
 #include "testbed/metrics/metrics.h"
+#include "testbed/report/frame_sheet.h"
 #include "testbed/report/report_html.h"
 
 namespace testbed {
@@ -36,6 +37,7 @@ std::vector<std::string> sequenceOutputNames(const SequenceJob& job) {
   for (const auto& e : job.entries) {
     const std::string& id = e.technique->info->id;
     for (const char* suffix : {"_frames.json", "_sequence.json", ".mp4"}) names.push_back(id + suffix);
+    if (job.compare) names.insert(names.end(), {id + "_frames_shaded.png", id + "_frames_error.png"});
     if (job.compare && job.plots) names.push_back(id + "_error_over_time.png");
   }
   return names;
@@ -50,30 +52,58 @@ std::vector<nlohmann::json> runSequence(const SequenceJob& job, Scene& scene, Fr
   for (const auto& entry : job.entries)  // compared: shaded | error heat map; otherwise the shaded image alone
     videos.push_back(std::make_unique<VideoWriter>(work.path() / (entry.technique->info->id + ".mp4"),
                                                    size.x * (job.compare ? 2 : 1), size.y, fps));
+  // Compared: every frame also kept, shrunk, on the page's frame viewer's sheets.
+  std::vector<FrameSheet> shadedSheets, errorSheets;
+  if (job.compare)
+    for (std::size_t e = 0; e < job.entries.size(); ++e) {
+      shadedSheets.emplace_back(size, job.range.count(), 3);
+      errorSheets.emplace_back(size, job.range.count(), 3);
+    }
   const auto addVideoFrame = [&](const SequenceFrame& f) {
     const ImageF shaded = runner.shade(f.run->visibility);
-    videos[f.entry]->addFrame(f.truth ? sideBySide(shaded, errorHeatMap(f.run->visibility, *f.truth)) : shaded);
+    if (!f.truth) return videos[f.entry]->addFrame(shaded);
+    const ImageF error = errorHeatMap(f.run->visibility, *f.truth);
+    videos[f.entry]->addFrame(sideBySide(shaded, error));
+    shadedSheets[f.entry].add(f.index, shaded);
+    errorSheets[f.entry].add(f.index, error);
   };
   const std::vector<SequenceOutcome> outcomes =
       runFrames(job.entries, job.range, job.compare, scene, runner, backend, addVideoFrame, std::cerr);
 
+  // After the frames: each entry's video finished, its sheets and plot written (a good part
+  // of a sequence's wall time), one progress line each.
   std::vector<nlohmann::json> records;
+  const auto started = std::chrono::steady_clock::now();
   for (std::size_t e = 0; e < outcomes.size(); ++e) {
     const std::string& id = job.entries[e].technique->info->id;
+    beginProgressLine("[" + std::to_string(e + 1) + "/" + std::to_string(outcomes.size()) + "] " + id + ": encoding" +
+                      (job.compare ? ", frame sheets" : "") + (job.compare && job.plots ? ", plot" : ""));
     videos[e]->finish();
     files.writeText(id + ".mp4", WorkFolder::read(videos[e]->path()));
     const std::string frames = outcomes[e].frames.dump(2) + "\n";
     files.writeText(id + "_frames.json", frames);
     records.push_back(outcomes[e].record);
     files.writeText(id + "_sequence.json", records.back().dump(2) + "\n");
+    if (job.compare) {
+      files.writeImage(id + "_frames_shaded.png", shadedSheets[e].image());
+      files.writeImage(id + "_frames_error.png", errorSheets[e].image());
+    }
     if (job.compare && job.plots) {
       const fs::path series = work.write(id + "_frames.json", frames);
       plotSeries(series, work.path());
       files.writeText(id + "_error_over_time.png", WorkFolder::read(work.path() / (id + "_error_over_time.png")));
     }
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    endProgressLine(": done, " + minutesSeconds(elapsed) + " elapsed, ETA " +
+                    minutesSeconds(elapsed / double(e + 1) * double(outcomes.size() - e - 1)));
   }
   files.writeText("sequence.json", nlohmann::json(records).dump(2) + "\n");
-  if (job.compare) files.writeText("index.html", sequenceHtml(scene.name, records, job.plots));
+  if (job.compare) {
+    std::vector<nlohmann::json> frameRecords;
+    for (const auto& outcome : outcomes) frameRecords.push_back(outcome.frames);
+    const SheetLayout layout = shadedSheets.front().layout();
+    files.writeText("index.html", sequenceHtml(scene.name, records, job.plots, {frameRecords, layout}));
+  }
   return records;
 }
 

@@ -235,7 +235,44 @@ std::string compareHtml(const Comparison& c) {
                       sections);
 }
 
-std::string sequenceHtml(const std::string& scene, const std::vector<json>& records, bool plots) {
+namespace {
+
+// The frame viewer's section: every entry's sheets and its per-frame mismatch, the ground
+// truth (the first entry) as the reference a technique flips against.
+json frameViewer(const SequenceFrames& frames) {
+  json entries = json::array();
+  json numbers = json::array();
+  for (const json& perFrame : frames.perEntry) {
+    const std::string id = perFrame.empty() ? "?" : perFrame.front().value("technique", std::string("?"));
+    json series = json::array();
+    for (const json& frame : perFrame) {
+      const auto value = numberAt(frame, "/error/mismatch_pct");
+      series.push_back(value ? json(*value) : json());
+      if (entries.empty()) numbers.push_back(frame.value("frame", 0));
+    }
+    entries.push_back({{"id", id}, {"shaded", id + "_frames_shaded.png"}, {"error", id + "_frames_error.png"},
+                       {"series", series}});
+  }
+  const SheetLayout& layout = frames.layout;
+  return {{"type", "frames"},
+          {"title", "Frame by frame"},
+          {"notes",
+           {"Each technique's frames as the run kept them (" + std::to_string(layout.frameSize.x) + "×" +
+            std::to_string(layout.frameSize.y) + ", 1/" + std::to_string(layout.factor) +
+            " of the run's size, each pixel its block's mean; the videos below hold the full size). Keys: ← → step, "
+            "Home End, f flips to the ground truth, e shows the error map, + − zoom. The chart is every technique's "
+            "mismatch per frame on one scale; click it to go to a frame."}},
+          {"frame", {{"width", layout.frameSize.x}, {"height", layout.frameSize.y}}},
+          {"columns", layout.columns},
+          {"frames", numbers},
+          {"metric", "mismatch %"},
+          {"entries", entries}};
+}
+
+}  // namespace
+
+std::string sequenceHtml(const std::string& scene, const std::vector<json>& records, bool plots,
+                         const SequenceFrames& frames) {
   std::vector<HtmlColumn> columns = {{"technique", false}, {"flicker", true}, {"crawl %", true},
                                      {"crawl missed %", true}, {"stable pairs", true}};
   std::vector<const Metric*> metrics;
@@ -277,6 +314,7 @@ std::string sequenceHtml(const std::string& scene, const std::vector<json>& reco
                  {"Flicker and crawl: docs/motion.md \"Temporal metrics\"; other columns: the mean over frames "
                   "(report.md has p95 and max). The technique's name links to its sequence record."},
                  columns, rows),
+       frameViewer(frames),
        {{"type", "videos"},
         {"title", "Videos and error over time"},
         {"notes", {"Each video: shaded | error heat map against the ground truth, frame by frame."}},

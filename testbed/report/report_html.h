@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "testbed/io/image_io.h"
+#include "testbed/report/frame_sheet.h"
 #include "testbed/report/comparison.h"
 
 namespace testbed {
@@ -58,9 +59,20 @@ std::vector<CloseUpWindow> sharedWorstWindows(const std::vector<const ImageF*>& 
 // speed-vs-error plot (inline).
 std::string compareHtml(const Comparison& comparison);
 
-// compare --frames' index.html: the sequence records table and, per technique, its video
-// (T.mp4) and error-over-time plot (T_error_over_time.png, when `plots`).
-std::string sequenceHtml(const std::string& scene, const std::vector<nlohmann::json>& sequenceRecords, bool plots);
+// What compare --frames keeps for its frame viewer: each entry's per-frame records
+// (T_frames.json's, the ground truth first) and the layout of its sheets
+// (T_frames_shaded.png, T_frames_error.png: report/frame_sheet.h).
+struct SequenceFrames {
+  std::vector<nlohmann::json> perEntry;
+  SheetLayout layout;
+};
+
+// compare --frames' index.html: the sequence records table; the frame viewer (each
+// technique's kept frames, stepped, scrubbed, flipped against the ground truth, its error
+// map, zoomed) with every technique's error over time on one chart; and per technique its
+// video (T.mp4) and error-over-time plot (T_error_over_time.png, when `plots`).
+std::string sequenceHtml(const std::string& scene, const std::vector<nlohmann::json>& sequenceRecords, bool plots,
+                         const SequenceFrames& frames);
 
 // A sweep's (or merge's) index.html. `tables`: file stem → the table as sweepTableJson
 // writes it (its plot is <stem>.svg beside); `entries[row][column]`: the cells a table entry

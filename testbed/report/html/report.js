@@ -390,7 +390,110 @@
     return root;
   }
 
-  const renderers = { table, figure, videos, links, viewer };
+  // compare --frames' frame viewer: the kept frames of every entry on sheets (one image per
+  // entry and kind, frames in a grid), one frame at a time on a canvas; the chart below holds
+  // every entry's per-frame error on one scale, with the current frame marked.
+  function frames(section) {
+    const w = section.frame.width;
+    const h = section.frame.height;
+    const count = section.frames.length;
+    const state = { entry: Math.min(1, section.entries.length - 1), index: 0, flipped: false, error: false, zoom: 1 };
+    const root = el('section', { class: 'frame-viewer', tabindex: '0' }, heading(section), notes(section));
+    const picker = el('select', { 'aria-label': 'technique' });
+    section.entries.forEach((entry, i) => picker.appendChild(el('option', { value: String(i), text: entry.id })));
+    picker.value = String(state.entry);
+    const slider = el('input', { type: 'range', min: '0', max: String(count - 1), value: '0', 'aria-label': 'frame' });
+    const label = el('span', { class: 'inspector' });
+    const canvas = el('canvas', { width: String(w), height: String(h) });
+    const chart = el('canvas', { class: 'frame-chart', width: '960', height: '180' });
+    root.appendChild(el('div', { class: 'viewer-controls' }, picker, slider, label));
+    root.appendChild(el('div', { class: 'frame-pane' }, canvas));
+    root.appendChild(chart);
+    const sheets = section.entries.map((entry) => {
+      const load = (src) => { const image = new Image(); image.src = src; return image; };
+      return { shaded: load(entry.shaded), error: load(entry.error) };
+    });
+
+    function draw() {
+      const shown = state.flipped ? 0 : state.entry;
+      const sheet = sheets[shown][state.error ? 'error' : 'shaded'];
+      const x = (state.index % section.columns) * w;
+      const y = Math.floor(state.index / section.columns) * h;
+      const context = canvas.getContext('2d');
+      context.imageSmoothingEnabled = false;
+      context.fillStyle = '#26323f';
+      context.fillRect(0, 0, w, h);
+      const side = 1 / state.zoom;  // the shown part of the frame, centred
+      if (sheet.complete && sheet.naturalWidth) {
+        context.drawImage(sheet, x + (w - w * side) / 2, y + (h - h * side) / 2, w * side, h * side, 0, 0, w, h);
+      }
+      slider.value = String(state.index);
+      const entry = section.entries[shown];
+      const value = entry.series[state.index];
+      label.textContent = 'frame ' + section.frames[state.index] + ' (' + (state.index + 1) + '/' + count + ') · ' +
+        entry.id + (state.error ? ' error map' : '') + ' · ' + section.metric + ' ' +
+        (value === null || value === undefined ? '–' : value.toPrecision(3)) + (state.zoom > 1 ? ' · zoom ' + state.zoom + '×' : '');
+      root.dataset.showing = entry.id + (state.error ? ':error' : '') + '@' + state.index;
+      drawChart();
+    }
+
+    function drawChart() {
+      const context = chart.getContext('2d');
+      const W = chart.width;
+      const H = chart.height;
+      const left = 48;
+      context.clearRect(0, 0, W, H);
+      let high = 0;
+      for (const entry of section.entries) for (const v of entry.series) if (Number.isFinite(v)) high = Math.max(high, v);
+      high = high || 1;
+      const px = (i) => left + (count > 1 ? (i / (count - 1)) * (W - left - 8) : 0);
+      const py = (v) => H - 16 - (v / high) * (H - 28);
+      context.strokeStyle = '#999';
+      context.beginPath(); context.moveTo(left, 8); context.lineTo(left, H - 16); context.lineTo(W - 8, H - 16); context.stroke();
+      context.fillStyle = '#555';
+      context.font = '11px sans-serif';
+      context.fillText(high.toPrecision(3), 2, 14);
+      context.fillText('0', 2, H - 16);
+      context.fillText(section.metric + ' per frame', left + 6, 14);
+      section.entries.forEach((entry, e) => {
+        context.strokeStyle = 'hsl(' + Math.round((360 * e) / section.entries.length) + ', 70%, 42%)';
+        context.lineWidth = e === state.entry ? 2.5 : 1;
+        context.beginPath();
+        entry.series.forEach((v, i) => { if (Number.isFinite(v)) context[i ? 'lineTo' : 'moveTo'](px(i), py(v)); });
+        context.stroke();
+      });
+      context.strokeStyle = '#000';
+      context.lineWidth = 1;
+      context.beginPath(); context.moveTo(px(state.index), 8); context.lineTo(px(state.index), H - 16); context.stroke();
+    }
+
+    function go(index) {
+      state.index = Math.max(0, Math.min(count - 1, index));
+      draw();
+    }
+    picker.addEventListener('change', () => { state.entry = Number(picker.value); state.flipped = false; draw(); });
+    slider.addEventListener('input', () => go(Number(slider.value)));
+    chart.addEventListener('click', (event) => {
+      const box = chart.getBoundingClientRect();
+      const x = ((event.clientX - box.left) / box.width) * chart.width;
+      go(Math.round(((x - 48) / (chart.width - 56)) * (count - 1)));
+    });
+    root.addEventListener('keydown', (event) => {
+      const keys = {
+        ArrowRight: () => go(state.index + 1), ArrowLeft: () => go(state.index - 1),
+        Home: () => go(0), End: () => go(count - 1),
+        f: () => { state.flipped = !state.flipped; draw(); }, e: () => { state.error = !state.error; draw(); },
+        '+': () => { state.zoom = Math.min(16, state.zoom * 2); draw(); },
+        '-': () => { state.zoom = Math.max(1, state.zoom / 2); draw(); },
+      };
+      if (keys[event.key]) { keys[event.key](); event.preventDefault(); }
+    });
+    for (const sheet of sheets) for (const image of [sheet.shaded, sheet.error]) image.addEventListener('load', draw);
+    draw();
+    return root;
+  }
+
+  const renderers = { table, figure, videos, links, viewer, frames };
   const main = document.getElementById('main');
   main.appendChild(el('h1', { text: page.title }));
   for (const line of page.notes || []) main.appendChild(el('p', { class: 'note', text: line }));
