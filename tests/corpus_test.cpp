@@ -4,6 +4,7 @@
 // the manifest says their check render showed.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 
@@ -82,6 +83,7 @@ TEST(CorpusCommand, BadOptionsAreRefusedAndNothingIsWritten) {
       {{"--seed", "1", "--count", "2", "--out", out, "--shadow-map", "16"}, "--shadow-map"},
       {{"--seed", "1", "--count", "2", "--out", out, "--size", "2048x2048"}, "--shadow-map"},
       {{"--seed", "1", "--count", "2", "--out", out, "--backend", "nosuch"}, "nosuch"},
+      {{"--seed", "1", "--count", "2", "--out", out, "--kind", "indoor"}, "--kind"},
   };
   for (const auto& [args, option] : cases) {
     std::vector<std::string> words = {"corpus"};
@@ -165,6 +167,55 @@ TEST(CorpusCommand, GeneratedScenesShowTheShadowBoundaryTheManifestRecords) {
       }
     }
   }
+}
+
+// --kind outdoor: the same seed gives the same bytes; every scene is a large ground under a
+// low sun seen from near the ground, with casters from near to far ahead of the camera,
+// sized with their distance; its check render admits it as the standard family's are; a
+// walking scene moves the camera forward and nothing else.
+TEST(CorpusCommand, OutdoorScenesStretchOneMapFromNearToFar) {
+  test::TempDir dir;
+  for (const char* out : {"a", "b"}) {
+    const auto run = test::runTestbed({"corpus", "--kind", "outdoor", "--seed", "11", "--count", "6", "--out",
+                                       (dir / out).string()});
+    ASSERT_EQ(run.exitCode, 0) << run.describe();
+  }
+  for (const auto& name : test::filesIn(dir / "a"))
+    EXPECT_EQ(test::readFile(dir / "a" / name), test::readFile(dir / "b" / name)) << name;
+  const auto manifest = nlohmann::json::parse(test::readFile(dir / "a" / "manifest.json"));
+  EXPECT_EQ(manifest["kind"], "outdoor");
+  ASSERT_EQ(manifest["scenes"].size(), 6u);
+  int walking = 0;
+  for (const auto& entry : manifest["scenes"]) {
+    SCOPED_TRACE(entry.dump());
+    const Scene scene = loadScene(dir / "a" / entry["file"].get<std::string>());
+    EXPECT_EQ(scene.light.type, LightType::Directional);
+    const double elevation = glm::degrees(std::asin(-glm::normalize(scene.light.direction).y));
+    EXPECT_GE(elevation, 12 - 1e-3);
+    EXPECT_LE(elevation, 40 + 1e-3);
+    EXPECT_LT(scene.camera.eye.y, 8.01f);
+    EXPECT_GE(entry["check"]["shadowed"].get<int>(), 0.02 * entry["check"]["receivers"].get<int>());
+    double previous = 0;
+    for (const auto& caster : entry["casters"]) {
+      const double distance = caster["distance"].get<double>(), size = caster["size"].get<double>();
+      EXPECT_GE(distance, previous);
+      EXPECT_GE(distance, 6 - 1e-3);
+      EXPECT_LE(distance, 300 + 1e-3);
+      EXPECT_NEAR(size / distance, 0.175, 0.075 + 1e-3);
+      previous = distance;
+    }
+    EXPECT_GE(entry["casters"].size(), 4u);
+    if (!entry["walk"].is_null()) {
+      ++walking;
+      ASSERT_NE(scene.animation, nullptr);
+      const nlohmann::json file = nlohmann::json::parse(test::readFile(dir / "a" / entry["file"].get<std::string>()));
+      EXPECT_FALSE(file["animation"].contains("light"));
+      EXPECT_FALSE(file["animation"].contains("objects"));
+      EXPECT_EQ(file["animation"]["camera"].size(), 2u);
+    }
+  }
+  EXPECT_GT(walking, 0);
+  EXPECT_LT(walking, 6);
 }
 
 }  // namespace

@@ -46,7 +46,7 @@ GroundTruthCounts renderCheck(const Scene& scene, const RenderSettings& settings
 
 CommandRunner addCorpusCommand(CLI::App& app) {
   struct Options {
-    std::string seed, count, out, size = "1280x720", backend = "osmesa";
+    std::string seed, count, out, size = "1280x720", backend = "osmesa", kind = "standard";
     int shadowMap = 1024;
     std::vector<std::string> meshFolders;
   };
@@ -65,9 +65,16 @@ CommandRunner addCorpusCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--backend", options->backend, "GL context of the check renders: osmesa or egl")
       ->capture_default_str();
+  command->add_option("--kind", options->kind,
+                      "standard (a mesh on a plane, spot or sun) or outdoor (casters near to far on a large ground "
+                      "under a low sun, the camera near the ground; docs/corpus.md)")
+      ->capture_default_str();
 
   return {command, [options]() {
     CorpusOptions corpus;
+    if (options->kind != "standard" && options->kind != "outdoor")
+      throw InputError("--kind: '" + oneLine(options->kind) + "' is not standard or outdoor");
+    corpus.kind = options->kind == "outdoor" ? CorpusKind::Outdoor : CorpusKind::Standard;
     corpus.seed = parseInteger("--seed", options->seed, 0, UINT64_MAX);
     corpus.count = int(parseInteger("--count", options->count, 1, kMaxCount));
     corpus.image = parseSize(options->size);
@@ -90,7 +97,7 @@ CommandRunner addCorpusCommand(CLI::App& app) {
     check.size = corpusCheckSize(corpus.image);
     check.shadowMapSize = corpus.shadowMap;
     validateSettings({corpus.image, corpus.shadowMap, check.depthFormat, check.repeat, std::nullopt});
-    checkCorpusSizes(corpus.image, corpus.shadowMap);
+    if (corpus.kind == CorpusKind::Standard) checkCorpusSizes(corpus.image, corpus.shadowMap);  // its close-ups
     int rendered = 0;
     corpus.render = [check, &rendered](const Scene& scene) { return renderCheck(scene, check, rendered); };
     const Corpus generated = generateCorpus(corpus);

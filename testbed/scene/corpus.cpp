@@ -18,12 +18,14 @@
 #include <nlohmann/json.hpp>
 
 #include "testbed/core/error.h"
+#include "testbed/scene/corpus_draw.h"
+#include "testbed/scene/corpus_outdoor.h"
 
 namespace testbed {
 namespace {
 
 namespace fs = std::filesystem;
-using Json = nlohmann::ordered_json;
+using namespace corpus_detail;
 
 constexpr double kPlaneHalf = 40;          // the receiver plane spans [-40, 40]² at y = 0
 constexpr std::size_t kMaxTriangles = 3'000'000;
@@ -31,45 +33,6 @@ constexpr double kMinThickness = 0.02;     // smallest / largest extent below th
 constexpr double kMaxMeshSize = 22;        // placeMesh fits a mesh to 10–22 units
 constexpr double kCameraFar = 600;
 constexpr std::size_t kMaxStemBytes = 48;  // of a mesh's stem in a scene's file name
-
-// Written numbers are rounded to 1e-4 so that a last-ulp difference of a libm cannot
-// change the text; + 0.0 turns -0 into 0.
-double r4(double x) { return std::round(x * 1e4) / 1e4 + 0.0; }
-Json vec(glm::dvec3 v) { return Json::array({r4(v.x), r4(v.y), r4(v.z)}); }
-// A point as the scene file will hold it, for the estimates.
-glm::vec3 rounded(glm::dvec3 v) { return glm::vec3(r4(v.x), r4(v.y), r4(v.z)); }
-
-std::uint64_t splitmix64(std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
-
-// Uniform draws from mt19937_64's fixed output, not std::uniform_real_distribution (whose
-// algorithm each standard library chooses).
-class Draw {
- public:
-  explicit Draw(std::uint64_t seed) : engine_(seed) {}
-  double uniform() { return double(engine_() >> 11) * 0x1.0p-53; }  // [0, 1)
-  double between(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-  double logBetween(double lo, double hi) { return lo * std::pow(hi / lo, uniform()); }
-  bool chance(double p) { return uniform() < p; }
-  std::size_t index(std::size_t n) { return std::min(n - 1, std::size_t(uniform() * double(n))); }
-
- private:
-  std::mt19937_64 engine_;
-};
-
-struct MeshInfo {
-  fs::path file, folder;  // folder: the --meshes folder it was found in
-  std::string reference;  // what the scene's "mesh" key holds
-  std::string named;      // how the manifest names the file (manifestName)
-  std::string stem;       // for scene names
-  std::size_t triangles = 0;
-  std::vector<glm::dvec3> points;
-  glm::dvec3 lo{0}, hi{0};
-};
 
 std::string lower(std::string text) {
   for (auto& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
@@ -218,11 +181,6 @@ std::vector<MeshInfo> usableMeshes(const std::vector<std::pair<fs::path, fs::pat
   return meshes;
 }
 
-glm::dvec3 onSphere(double elevationDeg, double azimuthDeg) {
-  const double e = glm::radians(elevationDeg), a = glm::radians(azimuthDeg);
-  return {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
-}
-
 glm::dvec3 clampToPlane(glm::dvec3 p, double margin) {
   const double limit = kPlaneHalf - margin;
   return {std::clamp(p.x, -limit, limit), p.y, std::clamp(p.z, -limit, limit)};
@@ -305,10 +263,6 @@ double directionalExtent(const glm::dvec3& direction, double top) {
       }
   return extent * 1.02;
 }
-
-struct SceneSample {
-  Json scene, manifest;
-};
 
 // Draw `attempt` of scene `index`: its own stream, so that a scene depends neither on the
 // count nor on how many draws the other scenes needed.
@@ -548,7 +502,9 @@ Corpus generateCorpus(const CorpusOptions& options) {
   }
   const glm::ivec2 checkSize = corpusCheckSize(options.image);
   Corpus corpus;
+  const bool outdoor = options.kind == CorpusKind::Outdoor;
   Json manifest = {{"generator", "testbed corpus"},
+                   {"kind", outdoor ? "outdoor" : "standard"},
                    {"seed", options.seed},
                    {"count", options.count},
                    {"assumed", {{"size", {options.image.x, options.image.y}}, {"shadow_map", options.shadowMap}}},
@@ -571,7 +527,8 @@ Corpus generateCorpus(const CorpusOptions& options) {
       if (attempt == kCorpusMaxDraws)
         throw InputError("--meshes: scene " + std::to_string(i) + ": none of " + std::to_string(kCorpusMaxDraws) +
                          " draws made an admissible scene (last: " + rejected.back()["why"].get<std::string>() + ")");
-      SceneSample sample = sampleScene(options, std::size_t(i), attempt, meshes);
+      SceneSample sample = outdoor ? sampleOutdoorScene(options, std::size_t(i), attempt, meshes)
+                                   : sampleScene(options, std::size_t(i), attempt, meshes);
       const std::string file = sample.manifest["file"].get<std::string>(), text = sample.scene.dump(2) + "\n";
       GroundTruthCounts counts;
       const std::optional<std::string> why = draftRefusal(options, file, text, counts);

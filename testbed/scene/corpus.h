@@ -37,7 +37,13 @@ struct GroundTruthCounts {
   int receivers = 0, boundaryPixels = 0, litReceivers = 0, shadowReceivers = 0;
 };
 
+// Which family the scenes come from: one mesh on an 80 × 80 plane under a spot or a sun
+// (standard), or outdoors: casters from near to far on a 400 × 400 ground under a low sun,
+// the camera near the ground (corpus_outdoor.h).
+enum class CorpusKind { Standard, Outdoor };
+
 struct CorpusOptions {
+  CorpusKind kind = CorpusKind::Standard;
   std::uint64_t seed = 0;
   int count = 0;
   // Folders searched (recursively, in sorted order) for .off/.obj/.ply/.stl meshes.
