@@ -20,7 +20,7 @@
 # reference, so that sm is a baseline for the soft metrics too), hard, soft or by_output;
 # --area-samples and --light-radius: the area-light reference's samples (default 64) and
 # a light radius replacing every scene's (default: each scene's own).
-# Usage: scripts/corpus.sh [--seed S] [--count N] [--out DIR] [--techniques all|LIST]
+# Usage: scripts/corpus.sh [--kind standard|outdoor] [--seed S] [--count N] [--out DIR] [--techniques all|LIST]
 #                          [--shadow-maps 512,1024,2048] [--stats-map 1024]
 #                          [--reference both|hard|soft|by_output] [--area-samples 64] [--light-radius R]
 #                          [-- extra sweep options, e.g. --repeat 3]
@@ -29,13 +29,14 @@ repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 testbed="${TESTBED:-${TESTBED_BUILD_DIR:-$repo/build}/testbed/app/testbed}"  # $TESTBED: the binary itself
 python=/usr/bin/python3
 [ -x "$python" ] || python=python3
-seed=2026 count=40 out="$repo/results/corpus" techniques=all maps=512,1024,2048 stats_map=1024
+seed=2026 count=40 out="$repo/results/corpus" techniques=all maps=512,1024,2048 stats_map=1024 kind=standard
 reference=both area_samples="" light_radius=""
 extra=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --seed) seed="$2"; shift 2 ;;
     --count) count="$2"; shift 2 ;;
+    --kind) kind="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
     --techniques) techniques="$2"; shift 2 ;;
     --shadow-maps) maps="$2"; shift 2 ;;
@@ -74,7 +75,7 @@ if [ -e "$work" ] && [ "$(cat "$work/arguments" 2>/dev/null)" != "$arguments" ];
 mkdir -p "$work"
 echo "$arguments" > "$work/arguments"
 if [ ! -f "$work/scenes/manifest.json" ]; then
-  "$testbed" corpus --seed "$seed" --count "$count" --out "$work/scenes" || { status=$?; rm -rf "$work"; exit $status; }
+  "$testbed" corpus --kind "$kind" --seed "$seed" --count "$count" --out "$work/scenes" || { status=$?; rm -rf "$work"; exit $status; }
 fi
 "$python" - "$repo/scripts/corpus_sweep.json" "$work/corpus.json" "$techniques" "$maps" "$reference" \
   "$area_samples" "$light_radius" <<'PY'
@@ -127,7 +128,7 @@ PY
 # committed file names no machine's folder.
 recorded_out="$out"
 case "$out" in "$repo"/*) recorded_out="${out#"$repo"/}" ;; esac
-printf -v recorded ' %q' --seed "$seed" --count "$count" --techniques "$techniques" --shadow-maps "$maps" \
+printf -v recorded ' %q' --kind "$kind" --seed "$seed" --count "$count" --techniques "$techniques" --shadow-maps "$maps" \
   --stats-map "$stats_map" --reference "$reference" --out "$recorded_out"
 [ -z "$area_samples" ] || recorded+=" --area-samples $area_samples"
 [ -z "$light_radius" ] || { printf -v more ' %q' --light-radius "$light_radius"; recorded+="$more"; }
