@@ -58,5 +58,23 @@ TEST(MeasurementEquivalence, CompareAndAOneCellSweepGiveTheSameErrors) {
   EXPECT_TRUE(recordOf(swept, "pcf").at("error").contains("soft_rmse")) << swept.dump();
 }
 
+// The same progress line in both: the step, what runs and where, the elapsed time and the ETA.
+TEST(MeasurementEquivalence, CompareAndSweepReportProgressAlike) {
+  TempDir tmp("measurement-progress");
+  const RunResult compare = runTestbed({"compare", "--scene", wallScene().string(), "--techniques", "sm,pcf", "--size",
+                                        kSize, "--shadow-map", kMap, "--out", (tmp / "compare").string()});
+  ASSERT_EQ(compare.exitCode, 0) << compare.describe();
+  writeFile(tmp / "spec.json", oneCellSpec().dump());
+  const RunResult sweep =
+      runTestbed({"sweep", "--spec", (tmp / "spec.json").string(), "--no-plot", "--out", (tmp / "sweep").string()});
+  ASSERT_EQ(sweep.exitCode, 0) << sweep.describe();
+  for (const RunResult* run : {&compare, &sweep}) {
+    EXPECT_NE(run->err.find("[1/3] groundtruth on wall"), std::string::npos) << run->err;
+    EXPECT_NE(run->err.find("[3/3] pcf on wall"), std::string::npos) << run->err;
+    EXPECT_NE(run->err.find(", elapsed "), std::string::npos) << run->err;
+    EXPECT_NE(run->err.find(", ETA "), std::string::npos) << run->err;
+  }
+}
+
 }  // namespace
 }  // namespace testbed::test
