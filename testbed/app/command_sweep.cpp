@@ -324,7 +324,7 @@ CommandRunner addSweepCommand(CLI::App& app) {
           if (f.index + 1 == range.count() && figureSet.count(sequenceCells[f.entry]))
             last.insert_or_assign(sequenceCells[f.entry], FigureImages{f.run->visibility, runner.shade(f.run->visibility)});
         };
-        const auto outcomes = runFrames(entries, range, true, moving, runner, backend, keepFigure, std::cerr);
+        const auto outcomes = runFrames(entries, range, true, moving, runner, backend, keepFigure);
         for (std::size_t e = 0; e < outcomes.size(); ++e) {
           const std::size_t cell = sequenceCells[e];
           Record record = outcomes[e].last;

@@ -166,7 +166,7 @@ int runWorst(const CLI::App& command, const WorstOptions& o) {
   const Evaluator evaluate(settings, metric, technique, baseline, context->description());
 
   WorstSearch search(seed, std::size_t(o.budget));
-  ProgressReporter progress(std::size_t(o.budget));
+  ProgressReporter progress{static_cast<std::size_t>(o.budget)};
   const std::string what = o.technique + " " + o.metric + (baseline ? " over " + o.against + "'s" : "");
   while (!search.done()) {
     const WorstPoint point = search.next();

@@ -55,7 +55,7 @@ std::vector<nlohmann::json> runSequence(const SequenceJob& job, Scene& scene, Fr
     videos[f.entry]->addFrame(f.truth ? sideBySide(shaded, errorHeatMap(f.run->visibility, *f.truth)) : shaded);
   };
   const std::vector<SequenceOutcome> outcomes =
-      runFrames(job.entries, job.range, job.compare, scene, runner, backend, addVideoFrame, std::cerr);
+      runFrames(job.entries, job.range, job.compare, scene, runner, backend, addVideoFrame);
 
   std::vector<nlohmann::json> records;
   for (std::size_t e = 0; e < outcomes.size(); ++e) {
