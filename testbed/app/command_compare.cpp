@@ -5,14 +5,13 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "groundtruth/shadow_volumes.h"
 #include "testbed/app/commands.h"
 #include "testbed/app/plugins.h"
 #include "testbed/app/sequence_run.h"
 #include "testbed/core/error.h"
 #include "testbed/core/messages.h"
 #include "testbed/gl/context.h"
-#include "testbed/harness/metric_table.h"
+#include "testbed/harness/measurement.h"
 #include "testbed/metrics/metrics.h"
 #include "testbed/report/comparison.h"
 #include "testbed/report/report_html.h"
@@ -132,7 +131,8 @@ CommandRunner addCompareCommand(CLI::App& app) {
     if (!options->frames.empty()) {
       if (options->areaSamples > 0) throw InputError("--area-samples: not available with --frames");
       SequenceJob job{parseFrameRange(options->frames, scene), true, {}, !options->noPlot};
-      job.entries.push_back({&shadowVolumeGroundTruth(), resolveParameters("groundtruth", {}, {})});
+      const MeasurementEntry truth = groundTruthEntry();
+      job.entries.push_back({truth.technique, truth.parameters});
       for (std::size_t i = 0; i < techniques.size(); ++i) job.entries.push_back({techniques[i], parameters[i]});
       OutputFiles files(options->common.out);
       for (const auto& name : sequenceOutputNames(job)) files.claim(name);
@@ -156,70 +156,43 @@ CommandRunner addCompareCommand(CLI::App& app) {
     if (hardMaps && softMaps) files.claim("grid_soft.png");
     auto context = createContext(options->common.backend);
     validateSettings(settings);
-    const std::string backend = context->description();
     FrameRunner runner(scene, settings);
-    const std::size_t steps = techniques.size() + 1 + (areaSamples > 0);
-    std::size_t step = 0;
-    auto progress = [&](const std::string& what) {
-      beginProgressLine("[" + std::to_string(++step) + "/" + std::to_string(steps) + "] " + what + " on " + scene.name);
-    };
-    auto writeOutputs = [&](const std::string& id, const TechniqueRun& run, const Record& record) {
-      files.writeImage(id + ".png", runner.shade(run.visibility));
-      files.writeImage(id + ".exr", run.visibility);
-      files.writeText(id + ".json", nlohmann::json(record).dump(2) + "\n");
-    };
+
+    MeasurementJob job;
+    job.backend = context->description();
+    job.where = scene.name;
+    job.ratiosToFirstEntry = true;
+    if (areaSamples > 0) job.area = AreaReferenceJob{areaSamples, true, std::nullopt};
+    for (std::size_t i = 0; i < techniques.size(); ++i) job.entries.push_back({techniques[i], parameters[i]});
+    References references;
+    ProgressReporter progress(measurementSteps(job, references));
 
     Comparison comparison;
     comparison.scene = scene.name;
     nlohmann::json all = nlohmann::json::array();
-
-    progress("groundtruth (shadow volumes)");
-    const TechniqueRun truth = runner.run(shadowVolumeGroundTruth(), resolveParameters("groundtruth", {}, {}));
-    comparison.groundTruth = makeRecord(truth, runner, backend);
-    comparison.groundTruth.error = computeErrorMetrics(truth.visibility, truth.visibility);
-    comparison.groundTruthVisibility = truth.visibility;
-    writeOutputs("groundtruth", truth, comparison.groundTruth);
-    all.push_back(comparison.groundTruth);
-    endProgressLine(": " + briefSummary(comparison.groundTruth, nullptr, ", "));
-
-    std::optional<TechniqueRun> area;
-    if (areaSamples > 0) {
-      progress("area-light reference (" + std::to_string(areaSamples) + " samples)");
-      const auto& reference = areaLightReference();
-      area = runner.run(reference, resolveParameters("area", reference.info->parameters,
-                                                     {{"area_samples", std::to_string(areaSamples)}}));
-      const Record record = makeRecord(*area, runner, backend);
-      writeOutputs("area", *area, record);
-      all.push_back(record);
-      endProgressLine(": " + briefSummary(record, nullptr, ", "));
-    }
-
-    for (std::size_t i = 0; i < techniques.size(); ++i) {
-      const std::string& id = techniques[i]->info->id;
-      progress(id);
-      const TechniqueRun run = runner.run(*techniques[i], parameters[i]);
-      ErrorMetrics error;
-      try {
-        error = computeErrorMetrics(run.visibility, truth.visibility, area ? &area->visibility : nullptr);
-      } catch (const std::invalid_argument& e) {  // which technique wrote the pixel it names
-        throw std::runtime_error("technique " + id + ": " + e.what());
-      }
-      Record record = makeRecord(run, runner, backend);
-      record.error = error;
-      writeOutputs(id, run, record);
-      all.push_back(record);
-      comparison.entries.push_back({record, run.visibility, runner.shade(run.visibility),
-                                    errorHeatMap(run.visibility, truth.visibility)});
-      endProgressLine(": " + briefSummary(record, &baselineRecord(comparison), ", "));
-    }
+    const auto keep = [&](const MeasuredRun& measured) {
+      const std::string id = measured.role == MeasuredRun::Role::GroundTruth     ? "groundtruth"
+                             : measured.role == MeasuredRun::Role::AreaReference ? "area"
+                                                                                 : techniques[measured.entry]->info->id;
+      files.writeImage(id + ".png", runner.shade(measured.run.visibility));
+      files.writeImage(id + ".exr", measured.run.visibility);
+      files.writeText(id + ".json", nlohmann::json(measured.record).dump(2) + "\n");
+      all.push_back(measured.record);
+      if (measured.role == MeasuredRun::Role::Entry)
+        comparison.entries.push_back({measured.record, measured.run.visibility, runner.shade(measured.run.visibility),
+                                      errorHeatMap(measured.run.visibility, *references.hard)});
+    };
+    const Measurement measurement = measure(runner, job, references, keep, &progress);
+    comparison.groundTruth = *measurement.groundTruth;
+    comparison.groundTruthVisibility = *references.hard;
     files.writeText("metrics.json", all.dump(2) + "\n");
     files.writeText("report.md", reportMarkdown(comparison));
     if (softMaps) {
       // The soft grid: the same rows, their error maps and close-ups against the area light.
       Comparison soft = comparison;
       soft.softReference = true;
-      soft.groundTruthVisibility = area->visibility;
-      for (auto& entry : soft.entries) entry.heatMap = softErrorHeatMap(entry.visibility, area->visibility);
+      soft.groundTruthVisibility = *references.area;
+      for (auto& entry : soft.entries) entry.heatMap = softErrorHeatMap(entry.visibility, *references.area);
       files.writeImage(hardMaps ? "grid_soft.png" : "grid.png", comparisonGrid(soft));
     }
     if (hardMaps) files.writeImage("grid.png", comparisonGrid(comparison));

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "groundtruth/shadow_volumes.h"
+#include "testbed/harness/measurement.h"
 #include "testbed/app/commands.h"
 #include "testbed/core/error.h"
 #include "testbed/core/messages.h"
@@ -25,8 +25,8 @@ GroundTruthCounts renderCheck(const Scene& scene, const RenderSettings& settings
   ImageF visibility;
   try {
     FrameRunner runner(scene, settings);
-    const auto& truth = shadowVolumeGroundTruth();
-    visibility = runner.run(truth, resolveParameters("groundtruth", truth.info->parameters, {})).visibility;
+    const MeasurementEntry truth = groundTruthEntry();
+    visibility = runner.run(*truth.technique, truth.parameters).visibility;
   } catch (const InputError&) {  // the generator draws again and records why
     endProgressLine(": refused");
     throw;

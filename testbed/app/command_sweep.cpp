@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <set>
 
@@ -17,7 +18,7 @@
 #include "testbed/core/error.h"
 #include "testbed/core/messages.h"
 #include "testbed/gl/context.h"
-#include "testbed/harness/metric_table.h"
+#include "testbed/harness/measurement.h"
 #include "testbed/harness/record.h"
 #include "testbed/harness/sequence.h"
 #include "testbed/metrics/metrics.h"
@@ -98,17 +99,177 @@ void applyAreaLight(const SweepSpec& spec, const std::string& sceneId, const std
                        "truth; give it one, or settings.light_radius");
 }
 
-// The area-light reference of the runner's frame: the mean of `samples` point-light
-// ground truths over the light's disk (groundtruth/shadow_volumes.h). Rendered once: it is
-// timed by no table, so neither a warm-up frame nor the spec's repeats (each costs
-// `samples` shadow-volume renders).
-ImageF renderAreaReference(FrameRunner& runner, int samples) {
-  const auto& reference = areaLightReference();
-  TechniqueSession session(runner, reference,
-                           resolveParameters("area", reference.info->parameters, {{"area_samples", std::to_string(samples)}}));
-  session.renderFrame();
-  return session.visibility();
+// One frame set-up's share of a run: the cells it measures, and whether its truth group's
+// references are rendered on it.
+struct SetupRun {
+  std::string truthKey, key;
+  std::vector<std::size_t> cells;  // the technique cells this shard still runs
+  bool rendersTruth = false;
+  bool ownsTruth = false;  // the ground truth is a cell this set-up saves
+  bool needsArea = false;  // its truth group runs a cell judged against the area-light reference
+};
+
+using CellsOf = std::function<std::vector<std::size_t>(const std::string&)>;
+using CellFilter = std::function<bool(std::size_t)>;
+using SetupsByTruth = std::map<std::string, std::vector<std::string>>;
+using CellsBySetup = std::map<std::string, std::vector<std::size_t>>;
+
+bool isTruthSetup(const SweepPlan& plan, const CellsBySetup& owned, const std::string& key, std::size_t truthCell) {
+  return plan.cells[owned.at(key).front()].frameKey() == plan.cells[truthCell].frameKey();
 }
+
+// Still frames: each truth group's references are rendered on its first set-up that runs.
+std::vector<SetupRun> planSetupRuns(const std::vector<std::string>& truthKeys, const SetupsByTruth& framesOf,
+                                    const CellsBySetup& owned, const SweepPlan& plan, const CellFilter& toRun,
+                                    const CellsOf& techniqueCells) {
+  std::vector<SetupRun> runs;
+  for (const auto& truthKey : truthKeys) {
+    const std::vector<std::string>& group = framesOf.at(truthKey);
+    const std::size_t truthCell = plan.cells[owned.at(group.front()).front()].truthCell;
+    bool truthRendered = false;
+    for (const auto& key : group) {
+      std::vector<std::size_t> cells = techniqueCells(key);
+      const bool truthHere = !truthRendered && (toRun(truthCell) || !cells.empty());
+      if (cells.empty() && !truthHere) continue;
+      const bool own = truthHere && toRun(truthCell) && key == group.front() && isTruthSetup(plan, owned, key, truthCell);
+      runs.push_back({truthKey, key, std::move(cells), truthHere, own, false});
+      truthRendered = truthRendered || truthHere;
+    }
+  }
+  return runs;
+}
+
+// Frames: every set-up runs its own sequence, its reference first.
+std::vector<SetupRun> planSequenceRuns(const std::vector<std::string>& truthKeys, const SetupsByTruth& framesOf,
+                                       const CellsBySetup& owned, const SweepPlan& plan, const CellFilter& toRun,
+                                       const CellsOf& techniqueCells) {
+  std::vector<SetupRun> runs;
+  for (const auto& truthKey : truthKeys) {
+    const std::vector<std::string>& group = framesOf.at(truthKey);
+    const std::size_t truthCell = plan.cells[owned.at(group.front()).front()].truthCell;
+    for (const auto& key : group) {
+      std::vector<std::size_t> cells = techniqueCells(key);
+      const bool own = toRun(truthCell) && isTruthSetup(plan, owned, key, truthCell);
+      if (cells.empty() && !own) continue;
+      runs.push_back({truthKey, key, std::move(cells), true, own, false});
+    }
+  }
+  return runs;
+}
+
+void warnOfAFlaggedGroundTruth(const SweepCell& cell, const ErrorMetrics& error) {
+  if (const auto flag = groundTruthFlag(error))
+    std::cerr << "sweep: warning: " << cell.scene << " at " << cell.size << ": the ground truth is " << *flag
+              << ": it has no shadow edge to rank techniques by, so its records carry error.flag and statistics "
+                 "leave them out\n";
+}
+
+// Runs a shard's planned set-ups: each still one through the measurement loop
+// (harness/measurement.h), each one over frames as a sequence (harness/sequence.h), and
+// keeps every finished cell (records, figure images, the resume files).
+struct SetupRunner {
+  const SweepSpec& spec;
+  const SweepPlan& plan;
+  const Shard& shard;
+  const SweepIdentity& identity;
+  const fs::path& out;
+  const CellsBySetup& owned;
+  const std::map<std::string, Scene>& scenes;
+  const std::map<std::string, FrameRange>& ranges;  // a spec over frames: each scene's range
+  const std::map<std::size_t, ParameterSet>& parameters;
+  const std::set<std::size_t>& figureSet;
+  const std::optional<TechniquePath>& path;
+  ProgressReporter& progress;
+  OutputFiles& files;
+  std::vector<Record>& records;
+  std::map<std::size_t, FigureImages>& figureImages;
+
+  const SweepCell& firstCell(const SetupRun& setup) const { return plan.cells[owned.at(setup.key).front()]; }
+
+  RenderSettings settingsOf(const SweepCell& c) const {
+    return {parseSize(c.size), c.shadowMap, parseDepthFormat(c.depthFormat), plan.repeat, path};
+  }
+
+  static std::string whereOf(const SweepCell& c) {
+    return c.scene + " (" + c.size + ", map " + std::to_string(c.shadowMap) + "², depth " + c.depthFormat + ")";
+  }
+
+  std::optional<FigureImages> figureImagesOf(std::size_t cell, const ImageF& visibility, const FrameRunner& runner) const {
+    if (!figureSet.count(cell)) return std::nullopt;
+    return FigureImages{visibility, runner.shade(visibility)};
+  }
+
+  void save(std::size_t cell, std::optional<FigureImages> images, Record record) const {
+    record.cell = cell;
+    if (!shard.owns(cell)) return;
+    if (images && shard.count > 1) {  // merge composes the figure from the shards' images
+      files.writeImage(figureFileName(cell, "exr"), images->visibility);
+      files.writeImage(figureFileName(cell, "png"), images->shaded);
+    }
+    try {  // kept for a re-run; a cell that cannot be kept only costs resuming it
+      saveFinishedCell(out, identity, record, images ? &*images : nullptr);
+    } catch (const std::exception& error) {
+      std::cerr << "sweep: cell " << cell << " not kept for resuming: " << error.what() << "\n";
+    }
+    records.push_back(std::move(record));
+    if (images) figureImages.emplace(cell, std::move(*images));
+  }
+
+  // `references`: the set-up's truth group's, rendered by its first set-up and kept for the others.
+  void runStill(const SetupRun& setup, const std::string& backend, References& references) const {
+    const SweepCell& first = firstCell(setup);
+    const Scene& scene = scenes.at(sceneKeyOf(first));
+    FrameRunner runner(scene, settingsOf(first));
+    MeasurementJob job;
+    job.backend = backend;
+    job.where = whereOf(first);
+    job.groundTruthIsOutput = setup.ownsTruth;
+    if (setup.needsArea) job.area = AreaReferenceJob{spec.area.samples, false, areaRadius(spec, scene)};
+    for (std::size_t i : setup.cells)
+      job.entries.push_back({&techniqueOf(plan.cells[i]), parameters.at(i), judgedSoft(spec, plan.cells[i], scene)});
+    const auto keep = [&](const MeasuredRun& measured) {
+      if (measured.role == MeasuredRun::Role::AreaReference) return;
+      const bool truth = measured.role == MeasuredRun::Role::GroundTruth;
+      if (truth) warnOfAFlaggedGroundTruth(first, *measured.record.error);
+      const std::size_t cell = truth ? first.truthCell : setup.cells[measured.entry];
+      checkSweepPasses(spec, plan, cell, measured.record);  // a misnamed pass stops here, not after every cell
+      if (!truth || setup.ownsTruth) save(cell, figureImagesOf(cell, measured.run.visibility, runner), measured.record);
+    };
+    measure(runner, job, references, keep, &progress);
+  }
+
+  // The set-up as one sequence: its ground truth first, then its cells, frame by frame.
+  void runSequence(const SetupRun& setup, const std::string& backend) const {
+    const SweepCell& first = firstCell(setup);
+    const std::size_t truthCell = first.truthCell;
+    Scene moving = scenes.at(sceneKeyOf(first));  // the sequence moves the scene frame by frame
+    FrameRunner runner(moving, settingsOf(first));
+    std::vector<std::size_t> sequenceCells = setup.cells;
+    sequenceCells.insert(sequenceCells.begin(), truthCell);
+    const MeasurementEntry truth = groundTruthEntry();
+    std::vector<SequenceEntry> entries;
+    for (std::size_t i : sequenceCells)
+      entries.push_back(i == truthCell ? SequenceEntry{truth.technique, truth.parameters}
+                                       : SequenceEntry{&techniqueOf(plan.cells[i]), parameters.at(i)});
+    const FrameRange& range = ranges.at(sceneKeyOf(first));
+    progress.begin(std::to_string(entries.size()) + " runs over " + std::to_string(range.count()) + " frames on " +
+                   whereOf(first));
+    progress.end();
+    std::map<std::size_t, FigureImages> last;  // the figure cells' last frame
+    const auto keepFigure = [&](const SequenceFrame& f) {
+      if (f.index + 1 == range.count() && figureSet.count(sequenceCells[f.entry]))
+        last.insert_or_assign(sequenceCells[f.entry], FigureImages{f.run->visibility, runner.shade(f.run->visibility)});
+    };
+    const auto outcomes = runFrames(entries, range, true, moving, runner, backend, keepFigure);
+    for (std::size_t e = 0; e < outcomes.size(); ++e) {
+      const std::size_t cell = sequenceCells[e];
+      Record record = outcomes[e].last;
+      record.sequence = sequenceBlock(outcomes[e].record);
+      checkSweepPasses(spec, plan, cell, record);
+      if (cell != truthCell || setup.ownsTruth) save(cell, last.count(cell) ? std::optional(last.at(cell)) : std::nullopt, record);
+    }
+  }
+};
 
 }  // namespace
 
@@ -219,124 +380,25 @@ CommandRunner addSweepCommand(CLI::App& app) {
           if (judgedSoft(spec, plan.cells[i], scenes.at(sceneKeyOf(plan.cells[i])))) return true;
       return false;
     };
-    std::size_t steps = 0, step = 0;
-    for (const auto& truthKey : truthKeys) {
-      std::size_t cells = 0;
-      for (const auto& key : framesOf[truthKey]) cells += techniqueCells(key).size();
-      const std::size_t truthCell = plan.cells[owned[framesOf[truthKey].front()].front()].truthCell;
-      if (spec.frames)  // one step per frame set-up that runs a sequence
-        for (const auto& key : framesOf[truthKey])
-          steps += !techniqueCells(key).empty() ||
-                   (toRun(truthCell) && plan.cells[owned[key].front()].frameKey() == plan.cells[truthCell].frameKey());
-      else if (cells > 0 || toRun(truthCell))
-        steps += cells + 1 + needsArea(truthKey);
+    std::vector<SetupRun> runs = spec.frames ? planSequenceRuns(truthKeys, framesOf, owned, plan, toRun, techniqueCells)
+                                             : planSetupRuns(truthKeys, framesOf, owned, plan, toRun, techniqueCells);
+    std::size_t steps = 0;
+    for (SetupRun& run : runs) {
+      run.needsArea = !spec.frames && needsArea(run.truthKey);
+      steps += spec.frames ? 1 : run.cells.size() + (run.rendersTruth ? 1 + run.needsArea : 0);
     }
     if (steps > 0) warmUpGBuffer({});
     const auto start = Clock::now();
-    auto progress = [&](const SweepCell& cell, const std::string& what) {
-      const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-      std::cerr << "[" << ++step << "/" << steps << "] " << what << " on " << cell.scene << " (" << cell.size << ", map "
-                << cell.shadowMap << "², depth " << cell.depthFormat << ")";
-      if (step > 1) std::cerr << ", ETA " << minutesSeconds(elapsed / double(step - 1) * double(steps - step + 1));
-      std::cerr << std::flush;
-    };
+    ProgressReporter progress(steps);
+    const SetupRunner setups{spec,       plan,      shard, identity, out,   owned,   scenes,      ranges,
+                             parameters, figureSet, path,  progress, files, records, figureImages};
     try {
-    for (const auto& truthKey : truthKeys) {
-      const std::vector<std::string>& group = framesOf[truthKey];
-      const std::size_t truthCell = plan.cells[owned[group.front()].front()].truthCell;
-      std::optional<ImageF> truthVisibility;  // the group's reference, kept only while the group runs
-      std::optional<ImageF> areaVisibility;   // its area-light reference, when a cell of it is judged by one
-      for (const auto& key : group) {
-        const std::vector<std::size_t> cells = techniqueCells(key);
-        const bool truthHere = !truthVisibility && (toRun(truthCell) || !cells.empty());
-        if (cells.empty() && !truthHere) continue;
-        const SweepCell& first = plan.cells[owned[key].front()];
-        const Scene& scene = scenes.at(sceneKeyOf(first));
-        const RenderSettings settings{parseSize(first.size), first.shadowMap, parseDepthFormat(first.depthFormat), plan.repeat, path};
-        auto save = [&](std::size_t cell, std::optional<FigureImages> images, Record record) {
-          record.cell = cell;
-          if (!shard.owns(cell)) return;
-          if (images) {
-            if (shard.count > 1) {  // merge composes the figure from the shards' images
-              files.writeImage(figureFileName(cell, "exr"), images->visibility);
-              files.writeImage(figureFileName(cell, "png"), images->shaded);
-            }
-          }
-          try {  // kept for a re-run; a cell that cannot be kept only costs resuming it
-            saveFinishedCell(out, identity, record, images ? &*images : nullptr);
-          } catch (const std::exception& error) {
-            std::cerr << "sweep: cell " << cell << " not kept for resuming: " << error.what() << "\n";
-          }
-          records.push_back(std::move(record));
-          if (images) figureImages.emplace(cell, std::move(*images));
-        };
-        if (spec.frames) {  // the set-up runs as one sequence: its reference first, then its cells
-          Scene moving = scene;  // the sequence moves the scene frame by frame
-          FrameRunner runner(moving, settings);
-          const bool own = toRun(truthCell) && first.frameKey() == plan.cells[truthCell].frameKey();
-          if (cells.empty() && !own) continue;
-          std::vector<std::size_t> sequenceCells = cells;
-          sequenceCells.insert(sequenceCells.begin(), truthCell);
-          std::vector<SequenceEntry> entries;
-          for (std::size_t i : sequenceCells)
-            entries.push_back({&techniqueOf(plan.cells[i]), i == truthCell ? resolveParameters(kGroundTruthId, {}, {}) : parameters.at(i)});
-          const FrameRange& range = ranges.at(sceneKeyOf(first));
-          progress(first, std::to_string(entries.size()) + " runs over " + std::to_string(range.count()) + " frames");
-          std::cerr << "\n";
-          std::map<std::size_t, FigureImages> last;  // the figure cells' last frame
-          const auto keepFigure = [&](const SequenceFrame& f) {
-            if (f.index + 1 == range.count() && figureSet.count(sequenceCells[f.entry]))
-              last.insert_or_assign(sequenceCells[f.entry], FigureImages{f.run->visibility, runner.shade(f.run->visibility)});
-          };
-          const auto outcomes = runFrames(entries, range, true, moving, runner, backend, keepFigure, std::cerr);
-          for (std::size_t e = 0; e < outcomes.size(); ++e) {
-            const std::size_t cell = sequenceCells[e];
-            Record record = outcomes[e].last;
-            record.sequence = sequenceBlock(outcomes[e].record);
-            checkSweepPasses(spec, plan, cell, record);
-            if (cell != truthCell || own) save(cell, last.count(cell) ? std::optional(last.at(cell)) : std::nullopt, record);
-          }
-          continue;
-        }
-        FrameRunner runner(scene, settings);
-        const auto figureImagesOf = [&](std::size_t cell, const ImageF& visibility) -> std::optional<FigureImages> {
-          if (!figureSet.count(cell)) return std::nullopt;
-          return FigureImages{visibility, runner.shade(visibility)};
-        };
-        if (truthHere) {  // every technique's errors are taken against it
-          const bool own = toRun(truthCell) && key == group.front() && first.frameKey() == plan.cells[truthCell].frameKey();
-          progress(first, own ? "groundtruth" : "groundtruth (reference for the errors)");
-          const TechniqueRun truth = runner.run(shadowVolumeGroundTruth(), resolveParameters(kGroundTruthId, {}, {}));
-          Record truthRecord = makeRecord(truth, runner, backend);
-          truthRecord.error = computeErrorMetrics(truth.visibility, truth.visibility);
-          std::cerr << ": " << briefSummary(truthRecord, nullptr, ", ") << "\n";
-          if (const auto flag = groundTruthFlag(*truthRecord.error))
-            std::cerr << "sweep: warning: " << first.scene << " at " << first.size << ": the ground truth is " << *flag
-                      << ": it has no shadow edge to rank techniques by, so its records carry error.flag and statistics "
-                         "leave them out\n";
-          checkSweepPasses(spec, plan, truthCell, truthRecord);
-          if (own) save(truthCell, figureImagesOf(truthCell, truth.visibility), truthRecord);
-          truthVisibility = truth.visibility;
-        }
-        if (!areaVisibility && needsArea(truthKey)) {
-          progress(first, "area-light reference (" + std::to_string(spec.area.samples) + " samples)");
-          std::cerr << "\n";
-          areaVisibility = renderAreaReference(runner, spec.area.samples);
-        }
-        for (std::size_t i : cells) {
-          const SweepCell& cell = plan.cells[i];
-          progress(cell, cell.technique);
-          const TechniqueRun run = runner.run(techniqueOf(cell), parameters.at(i));
-          Record record = makeRecord(run, runner, backend);
-          const bool soft = judgedSoft(spec, cell, scene);
-          record.error = computeErrorMetrics(run.visibility, *truthVisibility, soft ? &*areaVisibility : nullptr);
-          if (soft) record.areaReference = AreaReferenceRecord{spec.area.samples, areaRadius(spec, scene)};
-          std::cerr << ": " << briefSummary(record, nullptr, ", ") << "\n";
-          checkSweepPasses(spec, plan, i, record);  // a misnamed pass stops here, not after every cell
-          save(i, figureImagesOf(i, run.visibility), record);
-        }
+      References references;  // the current truth group's, kept while the group runs
+      for (std::size_t r = 0; r < runs.size(); ++r) {
+        if (r > 0 && runs[r - 1].truthKey != runs[r].truthKey) references = {};
+        if (spec.frames) setups.runSequence(runs[r], backend);
+        else setups.runStill(runs[r], backend, references);
       }
-    }
     } catch (const InputError&) {
       // A mistake in the spec found mid-run (a misnamed pass): the fixed spec is another
       // spec, so nothing here could be resumed; nothing is left behind.

@@ -3,17 +3,17 @@
 // and the shadow-map size of one scene for where T's error (or its excess over B's) is
 // largest, and writes the k worst as scene files with a manifest of each one's figure and
 // the compare command that reproduces it.
-#include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <sstream>
 #include <tuple>
 
-#include "groundtruth/shadow_volumes.h"
 #include "testbed/app/commands.h"
 #include "testbed/app/plugins.h"
 #include "testbed/core/error.h"
 #include "testbed/core/messages.h"
 #include "testbed/gl/context.h"
+#include "testbed/harness/measurement.h"
 #include "testbed/harness/metric_table.h"
 #include "testbed/harness/record.h"
 #include "testbed/scene/camera_check.h"
@@ -80,27 +80,31 @@ struct Evaluation {
   double figure() const { return technique - baseline.value_or(0.0); }
 };
 
+ParameterSet defaultParameters(const RegisteredTechnique& t) { return resolveParameters(t.info->id, t.info->parameters, {}); }
+
 class Evaluator {
  public:
   Evaluator(const RenderSettings& settings, const Metric& metric, const RegisteredTechnique& technique,
             const RegisteredTechnique* baseline, std::string backend)
       : settings_(settings), metric_(metric), technique_(technique), baseline_(baseline), backend_(std::move(backend)) {}
 
-  // As `compare` measures it: the ground truth and each technique on one runner.
+  // Measured as `compare` measures it: the ground truth, then each technique on one runner.
   Evaluation operator()(const Scene& scene, int shadowMap) const {
     RenderSettings settings = settings_;
     settings.shadowMapSize = shadowMap;
     FrameRunner runner(scene, settings);
-    const TechniqueRun truth = runner.run(shadowVolumeGroundTruth(), resolveParameters("groundtruth", {}, {}));
-    auto figure = [&](const RegisteredTechnique& t) {
-      const TechniqueRun run = runner.run(t, resolveParameters(t.info->id, t.info->parameters, {}));
-      Record record = makeRecord(run, runner, backend_);
-      record.error = computeErrorMetrics(run.visibility, truth.visibility);
-      return metric_.value(record, nullptr).value_or(0.0);
-    };
+    MeasurementJob job;
+    job.backend = backend_;
+    job.where = scene.name;
+    job.groundTruthIsOutput = false;
+    if (baseline_) job.entries.push_back({baseline_, defaultParameters(*baseline_)});
+    job.entries.push_back({&technique_, defaultParameters(technique_)});
+    References references;
+    const Measurement measured = measure(runner, job, references, {}, nullptr);
+    auto figure = [&](const Record& record) { return metric_.value(record, nullptr).value_or(0.0); };
     Evaluation e;
-    if (baseline_) e.baseline = figure(*baseline_);
-    e.technique = figure(technique_);
+    e.technique = figure(measured.entries.back());
+    if (baseline_) e.baseline = figure(measured.entries.front());
     return e;
   }
 
@@ -162,7 +166,7 @@ int runWorst(const CLI::App& command, const WorstOptions& o) {
   const Evaluator evaluate(settings, metric, technique, baseline, context->description());
 
   WorstSearch search(seed, std::size_t(o.budget));
-  const auto start = std::chrono::steady_clock::now();
+  ProgressReporter progress{static_cast<std::size_t>(o.budget)};
   const std::string what = o.technique + " " + o.metric + (baseline ? " over " + o.against + "'s" : "");
   while (!search.done()) {
     const WorstPoint point = search.next();
@@ -173,16 +177,18 @@ int runWorst(const CLI::App& command, const WorstOptions& o) {
       checkCamera(c.camera, o.scene);
     } catch (const InputError& error) {
       search.skip();
-      std::cerr << "[" << search.evaluated() << "/" << o.budget << "] skipped: " << oneLine(error.what()) << "\n";
+      progress.begin("skipped: " + oneLine(error.what()));
+      progress.end();
       continue;
     }
+    std::ostringstream where;
+    where << what << " (light " << c.lightElevation << "° up, map " << c.shadowMap << "²)";
+    progress.begin(where.str());
     const double figure = evaluate(withConfiguration(base, c), c.shadowMap).figure();
     search.report(point, figure);
-    const std::size_t n = search.evaluated();
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cerr << "[" << n << "/" << o.budget << "] " << what << " = " << figure << " (light " << c.lightElevation
-              << "° up, map " << c.shadowMap << "²), worst so far " << search.worst(1).front().figure << ", ETA "
-              << minutesSeconds(elapsed / double(n) * double(std::size_t(o.budget) - n)) << "\n";
+    std::ostringstream result;
+    result << ": " << figure << ", worst so far " << search.worst(1).front().figure;
+    progress.end(result.str());
   }
 
   // Each case written, read back from where it lands and rendered again: the manifest's

@@ -68,7 +68,7 @@ std::vector<nlohmann::json> runSequence(const SequenceJob& job, Scene& scene, Fr
     errorSheets[f.entry].add(f.index, error);
   };
   const std::vector<SequenceOutcome> outcomes =
-      runFrames(job.entries, job.range, job.compare, scene, runner, backend, addVideoFrame, std::cerr);
+      runFrames(job.entries, job.range, job.compare, scene, runner, backend, addVideoFrame);
 
   // After the frames: each entry's video finished, its sheets and plot written (a good part
   // of a sequence's wall time), one progress line each.

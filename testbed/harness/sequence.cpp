@@ -1,15 +1,14 @@
 #include "testbed/harness/sequence.h"
 
-#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
 #include <string_view>
 
 #include "testbed/core/error.h"
-#include "testbed/core/messages.h"
 #include "testbed/core/number_text.h"
 #include "testbed/harness/metric_table.h"
+#include "testbed/harness/progress.h"
 
 namespace testbed {
 namespace {
@@ -117,7 +116,7 @@ nlohmann::json SequenceSeries::sequenceRecord(const Record& last, const FrameRan
 
 std::vector<SequenceOutcome> runFrames(const std::vector<SequenceEntry>& entries, const FrameRange& range, bool compare,
                                        Scene& scene, FrameRunner& runner, const std::string& backend,
-                                       const std::function<void(const SequenceFrame&)>& onFrame, std::ostream& log) {
+                                       const std::function<void(const SequenceFrame&)>& onFrame) {
   struct Track {
     std::unique_ptr<TechniqueSession> session;
     SequenceSeries series;
@@ -127,10 +126,12 @@ std::vector<SequenceOutcome> runFrames(const std::vector<SequenceEntry>& entries
   for (const auto& entry : entries)
     tracks.push_back({std::make_unique<TechniqueSession>(runner, *entry.technique, entry.parameters), {}, {}});
   const glm::ivec2 size = runner.settings().size;
-  const auto start = std::chrono::steady_clock::now();
   const int count = range.count();
+  ProgressReporter progress{static_cast<std::size_t>(count)};
+  const std::string runs = std::to_string(tracks.size()) + (tracks.size() == 1 ? " run" : " runs");
   for (int k = 0; k < count; ++k) {
     const int frame = range.at(k);
+    progress.begin("frame " + std::to_string(frame) + " of " + scene.name + " (" + runs + ")");
     // The held views: every entry's visibility and the G-buffer of the previous frame's
     // scene (its light set-up as fitted then, its objects) through this frame's camera.
     std::vector<ImageF> held;
@@ -170,10 +171,7 @@ std::vector<SequenceOutcome> runFrames(const std::vector<SequenceEntry>& entries
           track.series.addFrame(frame, record, temporal ? &*temporal : nullptr, heldFrame ? &*heldFrame : nullptr));
       track.outcome.last = std::move(record);
     }
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    log << "testbed: frame " << k + 1 << "/" << count << " (frame " << frame << " of " << oneLine(scene.name) << ", "
-        << tracks.size() << (tracks.size() == 1 ? " run" : " runs") << "), elapsed " << minutesSeconds(elapsed) << ", ETA "
-        << minutesSeconds(elapsed / (k + 1) * (count - k - 1)) << "\n";
+    progress.end();
   }
   const int fps = scene.animation ? scene.animation->fps : 30;
   std::vector<SequenceOutcome> outcomes;

@@ -4,7 +4,6 @@
 // becomes on disk: a per-frame record each frame and one sequence record at the end.
 #include <functional>
 #include <map>
-#include <ostream>
 #include <string>
 #include <vector>
 
@@ -78,11 +77,11 @@ struct SequenceOutcome {
 // first entry is the reference every entry's errors and temporal figures are taken
 // against; at every frame whose camera moved, each entry first renders the held view (the
 // previous frame's scene through the new camera, untimed), which the temporal figures
-// compare the frame with. `onFrame` (may be empty) sees every run, for videos; one progress line per
-// frame with ETA goes to `log`.
+// compare the frame with. `onFrame` (may be empty) sees every run, for videos; each frame
+// is a step of its own progress line (harness/progress.h).
 std::vector<SequenceOutcome> runFrames(const std::vector<SequenceEntry>& entries, const FrameRange& range, bool compare,
                                        Scene& scene, FrameRunner& runner, const std::string& backend,
-                                       const std::function<void(const SequenceFrame&)>& onFrame, std::ostream& log);
+                                       const std::function<void(const SequenceFrame&)>& onFrame);
 
 // The sequence blocks a sweep record carries (Record::sequence): frames, light_fit, series, temporal.
 nlohmann::json sequenceBlock(const nlohmann::json& sequenceRecord);

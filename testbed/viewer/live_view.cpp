@@ -8,6 +8,7 @@
 
 #include "groundtruth/shadow_volumes.h"
 #include "testbed/core/error.h"
+#include "testbed/harness/measurement.h"
 #include "testbed/harness/record.h"
 #include "testbed/harness/sequence.h"
 #include "testbed/scene/view.h"
@@ -165,7 +166,8 @@ void LiveView::renderFrame() {
 
 const ImageF& LiveView::groundTruth() {
   if (!truth_ || truthGeneration_ != generation_) {
-    TechniqueSession truth(*runner_, shadowVolumeGroundTruth(), resolveParameters("groundtruth", {}, {}));
+    const MeasurementEntry entry = groundTruthEntry();
+    TechniqueSession truth(*runner_, *entry.technique, entry.parameters);
     truth.renderFrame();
     truth_ = truth.visibility();
     truthGeneration_ = generation_;
