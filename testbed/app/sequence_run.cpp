@@ -1,6 +1,5 @@
 #include "testbed/app/sequence_run.h"
 
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -14,6 +13,7 @@
 #include "testbed/core/error.h"
 #include "testbed/core/messages.h"
 #include "testbed/gl/context.h"
+#include "testbed/harness/progress.h"
 #include "testbed/io/video_writer.h"
 #include "testbed/metrics/metrics.h"
 #include "testbed/report/frame_sheet.h"
@@ -73,11 +73,10 @@ std::vector<nlohmann::json> runSequence(const SequenceJob& job, Scene& scene, Fr
   // After the frames: each entry's video finished, its sheets and plot written (a good part
   // of a sequence's wall time), one progress line each.
   std::vector<nlohmann::json> records;
-  const auto started = std::chrono::steady_clock::now();
+  ProgressReporter progress(outcomes.size());
   for (std::size_t e = 0; e < outcomes.size(); ++e) {
     const std::string& id = job.entries[e].technique->info->id;
-    beginProgressLine("[" + std::to_string(e + 1) + "/" + std::to_string(outcomes.size()) + "] " + id + ": encoding" +
-                      (job.compare ? ", frame sheets" : "") + (job.compare && job.plots ? ", plot" : ""));
+    progress.begin(id + ": encoding" + (job.compare ? ", frame sheets" : "") + (job.compare && job.plots ? ", plot" : ""));
     videos[e]->finish();
     files.writeText(id + ".mp4", WorkFolder::read(videos[e]->path()));
     const std::string frames = outcomes[e].frames.dump(2) + "\n";
@@ -93,9 +92,7 @@ std::vector<nlohmann::json> runSequence(const SequenceJob& job, Scene& scene, Fr
       plotSeries(series, work.path());
       files.writeText(id + "_error_over_time.png", WorkFolder::read(work.path() / (id + "_error_over_time.png")));
     }
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    endProgressLine(": done, " + minutesSeconds(elapsed) + " elapsed, ETA " +
-                    minutesSeconds(elapsed / double(e + 1) * double(outcomes.size() - e - 1)));
+    progress.end(": done");
   }
   files.writeText("sequence.json", nlohmann::json(records).dump(2) + "\n");
   if (job.compare) {
