@@ -6,6 +6,7 @@
 #include <string>
 
 #include "testbed/core/error.h"
+#include "testbed/io/json_input.h"
 #include "testbed/scene/scene_values.h"
 
 namespace testbed::scene_file {
