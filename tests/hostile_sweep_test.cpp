@@ -76,7 +76,7 @@ TEST(HostileSweep, SpecsAreReadStrictlyAndCappedBeforeAnythingRenders) {
       {"long-name.json", spec([](json& s) { s["name"] = std::string(300, 'n'); }),
        "long-name.json: name: 300 characters, more than the limit of 64"},
       {"scene-id.json", spec([](json& s) { s["scenes"]["../up"] = s["scenes"]["wall"]; }),
-       "scene-id.json: scenes.../up: expected lower-case letters"},
+       "scene-id.json: scenes[\"../up\"]: expected lower-case letters"},
       {"passes.json", spec([](json& s) { s["rows"][1]["passes"] = {"visibility", "visibility"}; }),
        "passes.json: rows[1].passes[1]: \"visibility\" is already in the list"},
       {"columns.json", spec([](json& s) { s["columns"] = json(std::vector<json>(257, {{"label", "c"}})); }),

@@ -160,7 +160,7 @@ class TheCommand(unittest.TestCase):
                                  text=True)
             self.assertEqual(run.returncode, 2)
             self.assertEqual(run.stdout, "")
-            self.assertEqual(run.stderr, f"testbed: {file}: [0].gbuffer_ms: missing\n")
+            self.assertEqual(run.stderr, f"testbed: {file}: [0].gbuffer_ms: missing required key\n")
 
 
 if __name__ == "__main__":

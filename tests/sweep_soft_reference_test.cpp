@@ -135,8 +135,8 @@ TEST(SweepSoftReference, BadReferencesAreOneLineNamingTheFieldAndWriteNothing) {
     spec["settings"][key] = value;
     cases.push_back({spec, expected});
   };
-  with("reference", "area", "settings.reference: expected hard, soft, both or by_output, got \"area\"");
-  with("area_samples", 0, "settings.area_samples: 0 is outside 1..4096");
+  with("reference", "area", "settings.reference: expected \"hard\", \"soft\", \"both\" or \"by_output\", got \"area\"");
+  with("area_samples", 0, "settings.area_samples: must be an integer in [1, 4096], got 0");
   with("light_radius", -1, "settings.light_radius: expected a number in (0, 1e6]");
   json hard = softSpec({"sm"});
   hard["settings"]["reference"] = "hard";

@@ -18,6 +18,7 @@
 #include "testbed/app/sweep_report.h"
 #include "testbed/core/error.h"
 #include "testbed/io/json_input.h"
+#include "testbed/io/json_reader.h"
 #include "testbed/sweep/sweep_records.h"
 #include "testbed/technique/path.h"
 #include "testbed/technique/registry.h"
@@ -61,11 +62,10 @@ std::string pathText(const std::optional<TechniquePath>& path) {
   return path ? "the " + std::string(pathName(*path)) + " path" : "no recorded path";
 }
 
-std::string field(const ShardDir& s, const char* name) {
-  if (!s.manifest.contains(name) || !s.manifest[name].is_string())
-    throw InputError((s.dir / "sweep.json").string() + ": " + name + ": missing or not a string");
-  return s.manifest[name].get<std::string>();
-}
+// The shard's manifest (sweep.json) through the checked JSON reader.
+JsonField manifestOf(const ShardDir& s) { return JsonField(s.manifest, (s.dir / "sweep.json").string()); }
+
+std::string field(const ShardDir& s, const char* name) { return manifestOf(s)[name].text(); }
 
 }  // namespace
 
@@ -94,14 +94,13 @@ CommandRunner addMergeCommand(CLI::App& app) {
       ShardDir s{dir, readShardFile(dir, "sweep.json", kMaxManifestBytes), readShardFile(dir, "records.json", kMaxJsonInputBytes),
                  readShardFile(dir, "spec.json", kMaxSweepSpecBytes), {}};
       const std::string manifest = (s.dir / "sweep.json").string();
-      if (!s.manifest.is_object()) throw InputError(manifest + ": expected an object, got " + briefJson(s.manifest));
+      const JsonField shard = manifestOf(s).object()["shard"];
       try {
-        s.shard = parseShard(field(s, "shard"));
+        s.shard = parseShard(shard.text());
       } catch (const InputError& error) {
-        throw InputError(manifest + ": shard: " + error.what());
+        shard.fail(error.what());
       }
-      if (!s.manifest.contains("overrides")) throw InputError(manifest + ": overrides: missing");
-      overridesFromJson(s.manifest["overrides"], manifest + ": overrides");
+      overridesFromJson(manifestOf(s)["overrides"].json(), manifest + ": overrides");
       // The fingerprint is recomputed, not trusted: an edited spec.json is another spec.
       if (specFingerprint(s.spec, s.manifest["overrides"]) != field(s, "spec_fingerprint"))
         throw InputError((s.dir / "spec.json").string() +

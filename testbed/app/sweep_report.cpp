@@ -10,6 +10,7 @@
 #include "testbed/app/work_folder.h"
 #include "testbed/core/error.h"
 #include "testbed/io/json_input.h"
+#include "testbed/io/json_reader.h"
 #include "testbed/report/report_html.h"
 #include "testbed/sweep/sweep_figure.h"
 
@@ -88,42 +89,26 @@ json overridesJson(const SweepOverrides& o) {
   return j;
 }
 
+// The overrides a sweep.json records, read by the checked JSON reader's rules; `where`
+// is their place ("<dir>/sweep.json: overrides"), to which each key's path is appended.
 SweepOverrides overridesFromJson(const json& j, const std::string& where) {
-  auto fail = [&](const std::string& key, const std::string& what) {
-    throw InputError(where + (key.empty() ? "" : "." + key) + ": " + what);
-  };
-  if (!j.is_object()) fail("", "expected an object, got " + briefJson(j));
-  auto text = [&](const std::string& key) {
-    if (!j[key].is_string()) fail(key, "expected a string, got " + briefJson(j[key]));
-    return j[key].get<std::string>();
-  };
-  auto integer = [&](const std::string& key, int lo, int hi) {
-    const json& v = j[key];
-    if (!v.is_number_integer() || v.get<std::int64_t>() < lo || v.get<std::int64_t>() > hi)
-      fail(key, "expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ", got " + briefJson(v));
-    return int(v.get<std::int64_t>());
-  };
+  const JsonField overrides(j, "", where);
+  overrides.allowKeys({"size", "shadow_map", "depth_format", "repeat"});
   SweepOverrides o;
-  for (const auto& [key, value] : j.items()) {
-    if (key == "size") {
-      o.size = text(key);
-      try {
-        parseSize(*o.size);
-      } catch (const InputError& error) {
-        fail(key, error.what());
-      }
-    } else if (key == "shadow_map") {
-      o.shadowMap = integer(key, 1, 16384);
-    } else if (key == "depth_format") {
-      o.depthFormat = text(key);
-      if (*o.depthFormat != "16" && *o.depthFormat != "24" && *o.depthFormat != "32f")
-        fail(key, "expected 16, 24 or 32f, got " + briefJson(value));
-    } else if (key == "repeat") {
-      o.repeat = integer(key, 1, 10000);
-    } else {
-      fail(key, "unknown key (allowed: depth_format, repeat, shadow_map, size)");
+  if (const auto size = overrides.find("size")) {
+    o.size = size->text();
+    try {
+      parseSize(*o.size);
+    } catch (const InputError& error) {
+      size->fail(error.what());
     }
   }
+  if (const auto map = overrides.find("shadow_map")) o.shadowMap = map->integer(1, 16384);
+  if (const auto format = overrides.find("depth_format")) {
+    static constexpr const char* kFormats[] = {"16", "24", "32f"};
+    o.depthFormat = kFormats[format->word({"16", "24", "32f"})];
+  }
+  if (const auto repeat = overrides.find("repeat")) o.repeat = repeat->integer(1, 10000);
   return o;
 }
 

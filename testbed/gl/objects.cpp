@@ -1,7 +1,6 @@
 #include "testbed/gl/objects.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
@@ -9,15 +8,9 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "testbed/core/error.h"
-#include "testbed/gl/shader_library.h"
-#include "testbed/gl/spirv.h"
 
 namespace testbed {
 namespace {
-
-thread_local GpuMemoryLedger* t_currentLedger = nullptr;
-thread_local const GpuMemoryLedger::Label* t_currentLabel = nullptr;
-std::atomic<std::uint64_t> g_processBytes{0};
 
 // One new name from glCreateBuffers, glCreateFramebuffers or glCreateVertexArrays.
 GLuint createName(PFNGLCREATEBUFFERSPROC create) {
@@ -28,40 +21,13 @@ GLuint createName(PFNGLCREATEBUFFERSPROC create) {
 
 }  // namespace
 
-GpuMemoryLedger::Scope::Scope(GpuMemoryLedger& ledger) : previous_(t_currentLedger) {
-  t_currentLedger = &ledger;
-}
-GpuMemoryLedger::Scope::~Scope() { t_currentLedger = previous_; }
-GpuMemoryLedger* GpuMemoryLedger::current() { return t_currentLedger; }
-std::uint64_t GpuMemoryLedger::processBytes() { return g_processBytes.load(); }
-
-std::vector<GpuMemoryLedger::Resource> GpuMemoryLedger::resources() const {
-  std::vector<Resource> out;
-  for (const auto& [key, bytes] : resources_)
-    out.push_back({std::get<0>(key), std::get<1>(key), std::get<2>(key), bytes});
-  return out;
-}
-
-void GpuMemoryLedger::add(const Resource& resource, std::int64_t delta) {
-  bytes_ += static_cast<std::uint64_t>(delta);
-  const auto key = std::make_tuple(resource.name, resource.format, resource.role);
-  if ((resources_[key] += static_cast<std::uint64_t>(delta)) == 0) resources_.erase(key);
-}
-
-GpuMemoryLedger::Label::Label(std::string name, ResourceRole role)
-    : name_(std::move(name)), role_(role), previous_(t_currentLabel) {
-  t_currentLabel = this;
-}
-GpuMemoryLedger::Label::~Label() { t_currentLabel = previous_; }
-
 GlObject::GlObject(GLuint id, std::uint64_t bytes, Deleter deleter, std::string_view format)
-    : id_(id), bytes_(bytes), deleter_(deleter), ledger_(bytes > 0 ? t_currentLedger : nullptr) {
+    : id_(id), bytes_(bytes), deleter_(deleter), ledger_(bytes > 0 ? GpuMemoryLedger::current() : nullptr) {
   if (ledger_) {
-    resource_ = {t_currentLabel ? t_currentLabel->name_ : "unnamed", std::string(format),
-                 t_currentLabel ? t_currentLabel->role_ : ResourceRole::Paper, 0};
+    resource_ = GpuMemoryLedger::labelled(format);
     ledger_->add(resource_, static_cast<std::int64_t>(bytes_));
   }
-  g_processBytes += bytes_;
+  GpuMemoryLedger::addProcessBytes(static_cast<std::int64_t>(bytes_));
 }
 
 GlObject::GlObject(GlObject&& other) noexcept
@@ -92,7 +58,7 @@ GlObject::~GlObject() { release(); }
 void GlObject::release() {
   if (id_ != 0 && deleter_) deleter_(id_);
   if (ledger_) ledger_->add(resource_, -static_cast<std::int64_t>(bytes_));
-  g_processBytes -= bytes_;
+  GpuMemoryLedger::addProcessBytes(-static_cast<std::int64_t>(bytes_));
   id_ = 0;
   bytes_ = 0;
   ledger_ = nullptr;
@@ -229,70 +195,9 @@ void VertexArray::setFloatAttribute(GLuint index, GLint components, std::size_t 
 
 namespace {
 
-// Throws GlError with the info log (and deletes `object`) unless `status` (compile or link
-// status) is true: the one check of glCompileShader and glLinkProgram. The message has one
-// line per compiler message, each naming the file and line it is about (`files`: the
-// expanded shader's, shader_library.h) or else `what` and the step.
-void checkBuilt(GLuint object, GLenum status, PFNGLGETSHADERIVPROC getiv, PFNGLGETSHADERINFOLOGPROC getLog,
-                PFNGLDELETESHADERPROC destroy, std::string_view what, const char* step,
-                const std::vector<std::string>& files = {}) {
-  GLint ok = 0;
-  getiv(object, status, &ok);
-  if (ok) return;
-  GLint length = 0;
-  getiv(object, GL_INFO_LOG_LENGTH, &length);
-  std::string log(std::size_t(std::max(length, 1)), '\0');
-  getLog(object, length, nullptr, log.data());
-  destroy(object);
-  const std::string prefix = std::string(what) + ": " + step + " error";
-  const std::string described = describeShaderLog(log, files, prefix);
-  throw GlError(described.empty() ? prefix : described);
-}
-
-// A stage's final text: expanded, the defines in right after the #version line (which
-// must stay first).
-ExpandedShader expandStage(std::string_view key, std::string_view defines) {
-  ExpandedShader expanded = expandShader(key);
-  std::string& source = expanded.text;
-  const auto versionEnd = source.find('\n');
-  if (source.rfind("#version", 0) != 0 || versionEnd == std::string::npos)
-    throw GlError(std::string(key) + ": shader must start with #version");
-  source.insert(versionEnd + 1, std::string(defines));
-  return expanded;
-}
-
-const char* stageExtension(GLenum stage) {
-  return stage == GL_VERTEX_SHADER ? "vert" : stage == GL_FRAGMENT_SHADER ? "frag" : "comp";
-}
-
-// The shader objects of a build, deleted with it (linking has them attached by then).
-struct Shaders {
-  std::vector<GLuint> ids;
-  Shaders() = default;
-  Shaders(const Shaders&) = delete;
-  Shaders& operator=(const Shaders&) = delete;
-  ~Shaders() {
-    for (GLuint id : ids) glDeleteShader(id);
-  }
-};
-
-GLuint link(const Shaders& shaders, std::string_view what) {
-  GLuint program = glCreateProgram();
-  for (GLuint shader : shaders.ids) glAttachShader(program, shader);
-  glLinkProgram(program);
-  checkBuilt(program, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog, glDeleteProgram, what, "link");
-  return program;
-}
-
 bool isImage(GLenum type) { return type >= GL_IMAGE_1D && type <= GL_UNSIGNED_INT_IMAGE_2D_MULTISAMPLE_ARRAY; }
 
 }  // namespace
-
-struct Program::Stage {
-  GLenum stage;
-  std::string_view key;
-  ExpandedShader source;
-};
 
 Program::Program(GLuint id, std::string name, std::vector<std::string> declared, std::optional<Locations> spirvLocations)
     : GlObject(id, 0, [](GLuint program) { glDeleteProgram(program); }),
@@ -304,52 +209,6 @@ Program::Program(GLuint id, std::string name, std::vector<std::string> declared,
   for (const Active& uniform : activeUniforms())
     for (const auto& [uniformName, at] : *spirvLocations)
       if (at == uniform.location) spirvLocations_->emplace(uniformName, at);
-}
-
-Program Program::build(std::vector<Stage> stages, std::string_view name) {
-  std::string sources;
-  for (const Stage& stage : stages) sources += stage.source.text;
-  std::vector<std::string> declared = declaredUniforms(sources);
-  Shaders shaders;
-  if (shaderPath() == ShaderPath::Glsl) {
-    for (const Stage& stage : stages) {
-      dumpFinalShader(stage.key, stageExtension(stage.stage), stage.source.text);
-      const char* text = stage.source.text.c_str();
-      shaders.ids.push_back(glCreateShader(stage.stage));
-      glShaderSource(shaders.ids.back(), 1, &text, nullptr);
-      glCompileShader(shaders.ids.back());
-      checkBuilt(shaders.ids.back(), GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog, [](GLuint) {},
-                 stage.key, "compile", stage.source.files);
-    }
-    return Program(link(shaders, name), std::string(name), std::move(declared));
-  }
-  std::vector<std::string> texts;
-  for (const Stage& stage : stages) texts.push_back(stage.source.text);
-  LocatedUniforms located = locateUniforms(std::move(texts), name);
-  for (std::size_t i = 0; i < stages.size(); ++i) {
-    const Stage& stage = stages[i];
-    const char* extension = stageExtension(stage.stage);
-    dumpFinalShader(stage.key, extension, located.sources[i]);
-    shaders.ids.push_back(createSpirvShader(stage.stage, compileToSpirv(located.sources[i], extension, stage.key,
-                                                                        stage.source.files)));
-    checkBuilt(shaders.ids.back(), GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog, [](GLuint) {},
-               stage.key, "SPIR-V specialize", stage.source.files);
-  }
-  return Program(link(shaders, name), std::string(name), std::move(declared), std::move(located.locations));
-}
-
-Program Program::graphics(std::string_view vertexKey, std::string_view fragmentKey,
-                          std::string_view defines) {
-  std::vector<Stage> stages;
-  stages.push_back({GL_VERTEX_SHADER, vertexKey, expandStage(vertexKey, defines)});
-  stages.push_back({GL_FRAGMENT_SHADER, fragmentKey, expandStage(fragmentKey, defines)});
-  return build(std::move(stages), fragmentKey);
-}
-
-Program Program::compute(std::string_view computeKey, std::string_view defines) {
-  std::vector<Stage> stages;
-  stages.push_back({GL_COMPUTE_SHADER, computeKey, expandStage(computeKey, defines)});
-  return build(std::move(stages), computeKey);
 }
 
 GLint Program::location(const char* name) const {

@@ -13,70 +13,9 @@
 #include <glm/glm.hpp>
 
 #include "testbed/gl/gl.h"
+#include "testbed/gl/memory_ledger.h"
 
 namespace testbed {
-
-// Whether a technique's paper has a resource (its shadow map, its own maps) or it is a
-// device of the fast path (docs/paths.md).
-enum class ResourceRole { Paper, Device };
-std::string_view roleName(ResourceRole role);  // "paper" or "device"
-
-// Sums the bytes of the GL objects created while it is the current ledger (see Scope);
-// each object returns its bytes to the ledger it was booked in when it is destroyed. The
-// sum is split by resource: the name and role of the Label current at the allocation, and
-// the object's format.
-class GpuMemoryLedger {
- public:
-  GpuMemoryLedger() = default;
-  GpuMemoryLedger(const GpuMemoryLedger&) = delete;
-  GpuMemoryLedger& operator=(const GpuMemoryLedger&) = delete;
-
-  struct Resource {
-    std::string name, format;  // format: "R32F", "DEPTH_COMPONENT16", "buffer"
-    ResourceRole role = ResourceRole::Paper;
-    std::uint64_t bytes = 0;
-    auto operator<=>(const Resource&) const = default;
-  };
-  std::uint64_t bytes() const { return bytes_; }
-  // The live resources, those of one name, format and role summed, sorted by name.
-  std::vector<Resource> resources() const;
-  // `delta` bytes of `resource` (its bytes ignored).
-  void add(const Resource& resource, std::int64_t delta);
-
-  // Makes `ledger` current on this thread for the scope's lifetime (nests).
-  class Scope {
-   public:
-    explicit Scope(GpuMemoryLedger& ledger);
-    ~Scope();
-    Scope(const Scope&) = delete;
-    Scope& operator=(const Scope&) = delete;
-
-   private:
-    GpuMemoryLedger* previous_;
-  };
-  // Names what the GL objects created on this thread during its lifetime are (nests);
-  // outside any, they are booked as "unnamed", paper.
-  class Label {
-   public:
-    Label(std::string name, ResourceRole role);
-    ~Label();
-    Label(const Label&) = delete;
-    Label& operator=(const Label&) = delete;
-
-   private:
-    std::string name_;
-    ResourceRole role_;
-    const Label* previous_;
-    friend class GlObject;
-  };
-  static GpuMemoryLedger* current();
-  // Every live object of the process, whatever ledger booked it.
-  static std::uint64_t processBytes();
-
- private:
-  std::uint64_t bytes_ = 0;
-  std::map<std::tuple<std::string, std::string, ResourceRole>, std::uint64_t> resources_;
-};
 
 // The name of a sized internal format as GL spells it without GL_ ("RGBA32F").
 std::string_view formatName(GLenum internalFormat);

@@ -6,6 +6,7 @@
 
 #include "testbed/core/error.h"
 #include "testbed/harness/metric_table.h"
+#include "testbed/io/json_reader.h"
 #include "testbed/render/shadow_map_pass.h"
 
 namespace testbed {
@@ -13,10 +14,11 @@ namespace {
 
 using nlohmann::json;
 
-// A field that is missing or mistyped; `field` is its path in the record ("error.rmse").
-struct BadField {
-  std::string field, what;
-};
+// Every field goes through the one checked reader (io/json_reader.h): its rules for
+// numbers, whole numbers and strings, its messages. Records are machine-written, so
+// unknown keys are not refused: the metric table and older writers add keys a reader
+// of today does not look at.
+using Reader = JsonField;
 
 std::string describe(double value) {
   char text[32];
@@ -24,55 +26,13 @@ std::string describe(double value) {
   return text;
 }
 
-// A JSON value and its path in the record, for messages.
-struct Reader {
-  const json& value;
-  std::string path;
-
-  Reader(const json& v, std::string p) : value(v), path(std::move(p)) {}
-
-  std::string at(std::string_view key) const { return path.empty() ? std::string(key) : path + "." + std::string(key); }
-  [[noreturn]] void fail(const std::string& what) const { throw BadField{path, what}; }
-  bool has(std::string_view key) const { return value.is_object() && value.contains(key); }
-  Reader operator[](std::string_view key) const {
-    if (!value.is_object()) fail("expected an object");
-    const auto it = value.find(key);
-    if (it == value.end()) throw BadField{at(key), "missing"};
-    return {*it, at(key)};
-  }
-  std::string text() const {
-    if (!value.is_string()) fail("expected a string");
-    return value.get<std::string>();
-  }
-  double number() const {
-    if (!value.is_number()) fail("expected a number");
-    return value.get<double>();
-  }
-  // Times, error metrics and distances are measured magnitudes: a negative one is a
-  // corrupt record, not a huge improvement.
-  double magnitude() const {
-    const double v = number();
-    if (!(v >= 0)) fail("expected a non-negative number, got " + describe(v));
-    return v;
-  }
-  std::uint64_t count() const {
-    // A parsed file holds unsigned numbers; a record built in code may hold signed ones.
-    if (!value.is_number_unsigned() && !(value.is_number_integer() && value.get<std::int64_t>() >= 0))
-      fail("expected a non-negative integer");
-    return value.get<std::uint64_t>();
-  }
-  bool boolean() const {
-    if (!value.is_boolean()) fail("expected true or false");
-    return value.get<bool>();
-  }
-  template <std::size_t N>
-  std::array<double, N> numbers() const {
-    if (!value.is_array() || value.size() != N) fail("expected an array of " + std::to_string(N) + " numbers");
-    std::array<double, N> out{};
-    for (std::size_t i = 0; i < N; ++i) out[i] = Reader{value[i], path + "[" + std::to_string(i) + "]"}.number();
-    return out;
-  }
-};
+// Times, error metrics and distances are measured magnitudes: a negative one is a
+// corrupt record, not a huge improvement.
+double magnitude(const Reader& r) {
+  const double v = r.number();
+  if (!(v >= 0)) r.fail("expected a non-negative number, got " + describe(v));
+  return v;
+}
 
 // The value at a metric's JSON pointer ("/error/boundary_px/mean"), its path in messages.
 Reader follow(const Reader& at, std::string_view pointer) {
@@ -92,8 +52,8 @@ json passesJson(const PassesRecord& passes) {
 PassesRecord readPasses(const Reader& times) {
   PassesRecord out;
   const Reader passes = times["passes"];
-  if (!passes.value.is_object()) passes.fail("expected an object of pass times");
-  for (const auto& [name, ms] : passes.value.items()) out.passesMs[name] = passes[name].magnitude();
+  if (!passes.json().is_object()) passes.fail("expected an object of pass times");
+  for (const auto& name : passes.keys()) out.passesMs[name] = magnitude(passes[name]);
   return out;  // totalMs: the metric table's
 }
 
@@ -105,13 +65,11 @@ json memoryJson(const std::vector<GpuMemoryLedger::Resource>& resources) {
 }
 
 std::vector<GpuMemoryLedger::Resource> readMemory(const Reader& memory) {
-  if (!memory.value.is_array()) memory.fail("expected an array of resources");
   std::vector<GpuMemoryLedger::Resource> out;
-  for (std::size_t i = 0; i < memory.value.size(); ++i) {
-    const Reader r{memory.value[i], memory.path + "[" + std::to_string(i) + "]"};
-    const std::string role = r["role"].text();
-    if (role != "paper" && role != "device") r["role"].fail("expected \"paper\" or \"device\"");
-    out.push_back({r["name"].text(), r["format"].text(), role == "paper" ? ResourceRole::Paper : ResourceRole::Device,
+  for (std::size_t i = 0, n = memory.arraySize("an array of resources"); i < n; ++i) {
+    const Reader r = memory[i];
+    const bool paper = r["role"].word({"paper", "device"}) == 0;
+    out.push_back({r["name"].text(), r["format"].text(), paper ? ResourceRole::Paper : ResourceRole::Device,
                    r["bytes"].count()});
   }
   return out;
@@ -138,12 +96,12 @@ json workJson(const std::optional<PassWork>& work) {
 }
 
 std::optional<PassWork> readWork(const Reader& record) {
-  if (!record.has("work") || record["work"].value.is_null()) return std::nullopt;
+  if (!record.has("work") || record["work"].json().is_null()) return std::nullopt;
   const Reader work = record["work"];
   PassWork out;
   const Reader passes = work["passes"];
-  if (!passes.value.is_object()) passes.fail("expected an object of pass counts");
-  for (const auto& [name, counts] : passes.value.items()) out.passes[name] = readCounts(passes[name]);
+  if (!passes.json().is_object()) passes.fail("expected an object of pass counts");
+  for (const auto& name : passes.keys()) out.passes[name] = readCounts(passes[name]);
   out.total = readCounts(work["total"]);
   return out;
 }
@@ -200,9 +158,7 @@ LightRecord readLight(const Reader& r) {
   if (r.has("split")) l.split = r["split"].numbers<2>();
   if (r.has("maps")) {
     const Reader maps = r["maps"];
-    if (!maps.value.is_array()) maps.fail("expected an array");
-    for (std::size_t i = 0; i < maps.value.size(); ++i)
-      l.maps.push_back(readLight(Reader{maps.value[i], maps.path + "[" + std::to_string(i) + "]"}));
+    for (std::size_t i = 0, n = maps.arraySize(); i < n; ++i) l.maps.push_back(readLight(maps[i]));
   }
   if (r.has("setup")) {
     const Reader setup = r["setup"];
@@ -212,25 +168,20 @@ LightRecord readLight(const Reader& r) {
 }
 
 Record read(const Reader& r) {
-  if (!r.value.is_object()) r.fail("expected an object (a record)");
+  if (!r.json().is_object()) r.fail("expected an object (a record)");
   Record out;
   out.technique = r["technique"].text();
   out.scene = r["scene"].text();
   const Reader size = r["size"];
-  if (!size.value.is_array() || size.value.size() != 2 || !size.value[0].is_number_integer() ||
-      !size.value[1].is_number_integer())
-    size.fail("expected [width, height]");
-  out.width = size.value[0].get<int>();
-  out.height = size.value[1].get<int>();
+  size.arrayOf(2, "[width, height]");
+  out.width = size[0].integer(0, std::numeric_limits<int>::max());
+  out.height = size[1].integer(0, std::numeric_limits<int>::max());
   out.shadowMap = int(r["shadow_map"].count());
   out.depthFormat = r["depth_format"].text();
   const Reader params = r["params"];
-  if (!params.value.is_object()) params.fail("expected an object");
-  out.params = params.value;
+  out.params = params.object().json();
   out.backend = r["backend"].text();
-  const std::string timing = r["timing"].text();
-  if (timing != "gpu" && timing != "wall") r["timing"].fail("expected \"gpu\" or \"wall\"");
-  out.timing = timing == "wall" ? TimingSource::Wall : TimingSource::Gpu;
+  out.timing = r["timing"].word({"gpu", "wall"}) == 1 ? TimingSource::Wall : TimingSource::Gpu;
   out.gpu = readPasses(r["gpu_ms"]);
   out.wall = readPasses(r["wall_ms"]);
   out.repeat = int(r["repeat"].count());
@@ -239,19 +190,17 @@ Record read(const Reader& r) {
   out.workRecorded = r.has("work");
   out.work = readWork(r);
   const Reader error = r["error"];
-  if (!error.value.is_null() && !error.value.is_object()) error.fail("expected an object or null");
+  if (!error.json().is_null() && !error.json().is_object()) error.fail("expected an object or null, got " + error.brief());
   if (r.has("cell")) out.cell = std::size_t(r["cell"].count());
-  if (r.has("shading_ms")) out.shadingMs = r["shading_ms"].magnitude();
+  if (r.has("shading_ms")) out.shadingMs = magnitude(r["shading_ms"]);
   if (r.has("sequence")) {
     const Reader sequence = r["sequence"];
-    if (!sequence.value.is_object() || !sequence.has("series")) sequence.fail("expected an object with \"series\"");
-    out.sequence = sequence.value;
+    if (!sequence.has("series")) sequence.fail("expected an object with \"series\"");
+    out.sequence = sequence.json();
   }
   if (r.has("area_reference")) {
     const Reader area = r["area_reference"];
-    const std::uint64_t samples = area["samples"].count();
-    if (samples < 1 || samples > 4096) area["samples"].fail("expected 1..4096");
-    out.areaReference = AreaReferenceRecord{int(samples), area["light_radius"].magnitude()};
+    out.areaReference = AreaReferenceRecord{area["samples"].integer(1, 4096), magnitude(area["light_radius"])};
   }
   if (r.has("path")) {
     out.path = parsePath(r["path"].text());
@@ -263,14 +212,14 @@ Record read(const Reader& r) {
     if (!out.shaderPath) r["shader_path"].fail("expected \"glsl\" or \"spirv\"");
   }
   for (const Metric& m : metricTable()) {
-    if (m.path.empty() || (inErrorBlock(m) && error.value.is_null())) continue;
+    if (m.path.empty() || (inErrorBlock(m) && error.json().is_null())) continue;
     // A soft metric without a reference has no key (soft_rmse: null).
-    if (m.reference == MetricReference::Soft && !r.value.contains(json::json_pointer(std::string(m.path)))) continue;
+    if (m.reference == MetricReference::Soft && !r.json().contains(json::json_pointer(std::string(m.path)))) continue;
     const Reader value = follow(r, m.path);
-    if (m.nullable && value.value.is_null()) continue;
-    m.store(out, m.integer ? double(value.count()) : value.magnitude());
+    if (m.nullable && value.json().is_null()) continue;
+    m.store(out, m.integer ? double(value.count()) : magnitude(value));
   }
-  if (!error.value.is_null() && !out.error) out.error.emplace();  // an error block of no metric: impossible today
+  if (!error.json().is_null() && !out.error) out.error.emplace();  // an error block of no metric: impossible today
   if (out.error) readPixelCounts(error, *out.error);
   std::uint64_t split = 0;
   for (const auto& m : out.memory.value_or(std::vector<GpuMemoryLedger::Resource>{})) split += m.bytes;
@@ -317,21 +266,10 @@ Record makeRecord(const TechniqueRun& run, const FrameRunner& runner, const std:
 
 double frameTimeMs(const Record& record) { return record.timed().totalMs; }
 
-Record readRecord(const json& value, const std::string& where) {
-  try {
-    return read(Reader{value, ""});
-  } catch (const BadField& bad) {
-    throw InputError(where + (bad.field.empty() ? "" : "." + bad.field) + ": " + bad.what);
-  }
-}
+// `where` is the record's place, to which the reader appends each field's path.
+Record readRecord(const json& value, const std::string& where) { return read(Reader(value, "", where)); }
 
-void from_json(const json& value, Record& record) {
-  try {
-    record = read(Reader{value, ""});
-  } catch (const BadField& bad) {
-    throw InputError((bad.field.empty() ? "record" : bad.field) + ": " + bad.what);
-  }
-}
+void from_json(const json& value, Record& record) { record = read(Reader(value, "", "")); }
 
 void to_json(json& out, const LightRecord& l) {
   out = {{"type", l.type},
@@ -349,13 +287,7 @@ void to_json(json& out, const LightRecord& l) {
   if (l.setup) out["setup"] = {{"cascades", l.setup->cascades}, {"splits", l.setup->splits}, {"fit", l.setup->fit}};
 }
 
-void from_json(const json& value, LightRecord& light) {
-  try {
-    light = readLight(Reader{value, ""});
-  } catch (const BadField& bad) {
-    throw InputError("light" + (bad.field.empty() ? "" : "." + bad.field) + ": " + bad.what);
-  }
-}
+void from_json(const json& value, LightRecord& light) { light = readLight(Reader(value, "", "light")); }
 
 void to_json(json& out, const Record& r) {
   out = {{"technique", r.technique},

@@ -187,7 +187,15 @@ TEST(Record, ShaderPathRoundTripsAndDefaultsToGlsl) {
             "runs/x.json: [0].shader_path: expected \"glsl\" or \"spirv\"");
   j["shader_path"] = 1;
   EXPECT_EQ(test::inputErrorOf([&] { readRecord(j, "runs/x.json: [0]"); }).value_or("accepted"),
-            "runs/x.json: [0].shader_path: expected a string");
+            "runs/x.json: [0].shader_path: expected a string, got 1");
+}
+
+// The checked JSON reader's rule (io/json_reader.h), as in scene files and sweep specs.
+TEST(Record, WholeNumbersMayBeWrittenAsFloats) {
+  json j = baselineRecord("pcf");
+  const std::uint64_t triangles = j["triangles"].get<std::uint64_t>();
+  j["triangles"] = double(triangles);
+  EXPECT_EQ(readRecord(j, "runs/x.json: [0]").triangles, triangles);
 }
 
 TEST(Record, MalformedRecordsNameTheField) {
@@ -198,25 +206,25 @@ TEST(Record, MalformedRecordsNameTheField) {
   EXPECT_NO_THROW(readRecord(good, "runs/x.json: [4]"));
   json r = good;
   r.erase("scene");
-  EXPECT_EQ(message(r), "runs/x.json: [4].scene: missing");
+  EXPECT_EQ(message(r), "runs/x.json: [4].scene: missing required key");
   r = good;
   r["gpu_ms"]["passes"]["shadow-map"] = "slow";
-  EXPECT_EQ(message(r), "runs/x.json: [4].gpu_ms.passes.shadow-map: expected a number");
+  EXPECT_EQ(message(r), "runs/x.json: [4].gpu_ms.passes.shadow-map: expected a number, got \"slow\"");
   r = good;
   r["error"]["boundary_px"]["p95"] = nullptr;  // how a NaN is written
-  EXPECT_EQ(message(r), "runs/x.json: [4].error.boundary_px.p95: expected a number");
+  EXPECT_EQ(message(r), "runs/x.json: [4].error.boundary_px.p95: expected a number, got null");
   r = good;
   r["cpu_ms"] = -2.0;
   EXPECT_EQ(message(r), "runs/x.json: [4].cpu_ms: expected a non-negative number, got -2");
   r = good;
   r["light"]["eye"] = {1.0, 2.0};
-  EXPECT_EQ(message(r), "runs/x.json: [4].light.eye: expected an array of 3 numbers");
+  EXPECT_EQ(message(r), "runs/x.json: [4].light.eye: expected an array of 3 numbers, got [1.0,2.0]");
   r = good;
   r["size"] = {160};
-  EXPECT_EQ(message(r), "runs/x.json: [4].size: expected [width, height]");
+  EXPECT_EQ(message(r), "runs/x.json: [4].size: expected [width, height], got [160]");
   r = good;
   r["triangles"] = 1.5;
-  EXPECT_EQ(message(r), "runs/x.json: [4].triangles: expected a non-negative integer");
+  EXPECT_EQ(message(r), "runs/x.json: [4].triangles: expected a non-negative integer, got 1.5");
   EXPECT_EQ(message(json::array()), "runs/x.json: [4]: expected an object (a record)");
   // from_json (j.get<Record>()) says the same without the file.
   r = good;
@@ -225,7 +233,7 @@ TEST(Record, MalformedRecordsNameTheField) {
     (void)r.get<Record>();
     ADD_FAILURE() << "accepted a record without error.rmse";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "error.rmse: missing");
+    EXPECT_EQ(std::string(e.what()), "error.rmse: missing required key");
   }
 }
 

@@ -8,6 +8,8 @@
 //   - a key given twice in one object (nlohmann would keep the last silently);
 //   - nesting deeper than kMaxJsonDepth (no input needs it, and printing or walking such a
 //     value recursively would overflow the stack).
+// The values in a parsed document are then read through json_reader.h, whose rules (whole
+// numbers, finite numbers, unknown keys) every reader shares.
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>

@@ -9,6 +9,7 @@
 #include "testbed/core/error.h"
 #include "testbed/core/markdown_text.h"
 #include "testbed/io/json_input.h"
+#include "testbed/io/json_reader.h"
 #include "testbed/technique/path.h"
 
 namespace testbed {
@@ -124,13 +125,11 @@ std::vector<CheckRecord> parseCheckRecords(const json& records, const std::strin
   std::vector<CheckRecord> parsed;
   for (std::size_t i = 0; i < records.size(); ++i) {
     const std::string where = file + ": [" + std::to_string(i) + "]";
-    const json& r = records[i];
-    if (!r.is_object()) fail(where, "expected an object (a record)");
-    if (!r.contains("technique")) fail(where + ".technique", "missing");
-    if (!r["technique"].is_string()) fail(where + ".technique", "expected a string");
-    const std::string technique = r["technique"].get<std::string>();
+    const JsonField r(records[i], "", where);
+    if (!r.json().is_object()) r.fail("expected an object (a record)");
+    const std::string technique = r["technique"].text();
     if (technique == "groundtruth" || technique == "area") continue;  // references, no error of their own
-    CheckRecord record{file, readRecord(r, where), std::nullopt, false};
+    CheckRecord record{file, readRecord(r.json(), where), std::nullopt, false};
     if (!record.record.error) fail(where + ".error", "expected an object (records from `testbed compare`)");
     parsed.push_back(std::move(record));
   }

@@ -284,32 +284,32 @@ TEST(RegressionCheck, MalformedRecordsNameTheFileAndField) {
   };
   json r = run();
   r[2]["error"].erase("rmse");
-  EXPECT_EQ(message(r), "runs/metrics.json: [2].error.rmse: missing");
+  EXPECT_EQ(message(r), "runs/metrics.json: [2].error.rmse: missing required key");
   r = run();
   r[1].erase("backend");
-  EXPECT_EQ(message(r), "runs/metrics.json: [1].backend: missing");
+  EXPECT_EQ(message(r), "runs/metrics.json: [1].backend: missing required key");
   r = run();
   r[3]["wall_ms"]["total"] = "fast";
-  EXPECT_EQ(message(r), "runs/metrics.json: [3].wall_ms.total: expected a number");
+  EXPECT_EQ(message(r), "runs/metrics.json: [3].wall_ms.total: expected a number, got \"fast\"");
   r = run();
   r[2]["timing"] = "cpu";
-  EXPECT_EQ(message(r), "runs/metrics.json: [2].timing: expected \"gpu\" or \"wall\"");
+  EXPECT_EQ(message(r), "runs/metrics.json: [2].timing: expected \"gpu\" or \"wall\", got \"cpu\"");
   r = run();
   r[1]["light"].erase("near");
-  EXPECT_EQ(message(r), "runs/metrics.json: [1].light.near: missing");
+  EXPECT_EQ(message(r), "runs/metrics.json: [1].light.near: missing required key");
   r = run();
   r[1]["error"] = nullptr;
   EXPECT_EQ(message(r), "runs/metrics.json: [1].error: expected an object (records from `testbed compare`)");
   r = run();
   r[3]["memory_bytes"] = -1;
-  EXPECT_EQ(message(r), "runs/metrics.json: [3].memory_bytes: expected a non-negative integer");
+  EXPECT_EQ(message(r), "runs/metrics.json: [3].memory_bytes: expected a non-negative integer, got -1");
   EXPECT_NE(message(json::object()).find("expected a JSON array"), std::string::npos);
   r = run();
   r[1]["work"]["passes"]["visibility"].erase("compute_invocations");
-  EXPECT_EQ(message(r), "runs/metrics.json: [1].work.passes.visibility.compute_invocations: missing");
+  EXPECT_EQ(message(r), "runs/metrics.json: [1].work.passes.visibility.compute_invocations: missing required key");
   r = run();
   r[1]["work"]["total"]["vertex_invocations"] = -3;
-  EXPECT_EQ(message(r), "runs/metrics.json: [1].work.total.vertex_invocations: expected a non-negative integer");
+  EXPECT_EQ(message(r), "runs/metrics.json: [1].work.total.vertex_invocations: expected a non-negative integer, got -3");
 }
 
 }  // namespace

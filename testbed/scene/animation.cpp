@@ -131,7 +131,7 @@ FrameChange applyFrame(Scene& scene, int frame) {
     SceneObject& object = scene.objects[track.object];
     const ObjectPose pose = poseAt(track, frame);
     if (pose == object.pose) continue;
-    // The parser bounded the placement over every frame (scene_parser.cpp, checkAnimatedObjects).
+    // The parser bounded the placement over every frame (animation_reader.cpp, checkAnimatedObjects).
     if (!placeMesh(*object.local, pose.matrix() * object.fit, object.mesh))
       throw InputError(scene.file.string() + ": " + object.label + ": transformed coordinates at frame " +
                        std::to_string(frame) + " are not finite");

@@ -1,5 +1,5 @@
 #pragma once
-// The checks a scene file's camera gets (scene_parser.cpp), for a camera made otherwise:
+// The checks a scene file's camera gets (scene_values.h), for a camera made otherwise:
 // the viewer's scripted moves.
 #include <filesystem>
 

@@ -168,6 +168,13 @@ TEST_F(SceneParser, ParseSceneWorksOnADocument) {
   }
 }
 
+// The checked JSON reader's rule (io/json_reader.h): a whole number however written.
+TEST_F(SceneParser, WholeNumbersMayBeWrittenAsFloats) {
+  json scene = goodScene();
+  scene["objects"][1]["segments"] = 3.0;
+  EXPECT_EQ(parseScene(scene, dir_ / "virtual.json").objects[1].mesh.n_faces(), 18u);  // 3 × 3 quads
+}
+
 TEST_F(SceneParser, RotationIsXThenYThenZAfterScale) {
   json scene = goodScene();
   // Box 1 x 2 x 3: X by 90 makes it 1 x 3 x 2, then Y by 90 makes it 2 x 3 x 1.

@@ -8,6 +8,7 @@
 #include "groundtruth/shadow_volumes.h"
 #include "testbed/core/error.h"
 #include "testbed/io/json_input.h"
+#include "testbed/io/json_reader.h"
 #include "testbed/technique/registry.h"
 
 namespace testbed {
@@ -187,11 +188,13 @@ std::map<std::size_t, ResumedCell> loadFinishedCells(const fs::path& out, const 
         for (std::size_t i = 0; records.is_array() && i < records.size(); ++i) {
           const json& r = records[i];
           const std::string where = (out / "records.json").string() + ": [" + std::to_string(i) + "]";
-          if (!r.is_object() || !r.contains("cell") || !r["cell"].is_number_unsigned()) {
-            log << "sweep: " << where << ".cell: missing; running the cell again\n";
+          std::size_t cell = 0;
+          try {
+            cell = std::size_t(JsonField(r, "", where).object()["cell"].count());
+          } catch (const InputError& e) {
+            log << "sweep: " << e.what() << "; running the cell again\n";
             continue;
           }
-          const std::size_t cell = r["cell"].get<std::size_t>();
           consider(r, cell, where, out / ("figure-cell-" + std::to_string(cell) + ".exr"),
                    out / ("figure-cell-" + std::to_string(cell) + ".png"));
         }

@@ -53,6 +53,14 @@ std::string errorOf(const json& spec) {
 
 TEST(SweepSpec, TinySpecIsValid) { EXPECT_EQ(errorOf(tinySpec()), ""); }
 
+// The checked JSON reader's rule (io/json_reader.h), as in scene files and records.
+TEST(SweepSpec, WholeNumbersMayBeWrittenAsFloats) {
+  json spec = tinySpec();
+  spec["columns"][0]["shadow_map"] = 64.0;
+  EXPECT_EQ(errorOf(spec), "");
+  EXPECT_EQ(*parseSweepSpec(spec, kSpecFile).columns[0].set.shadowMap, 64);
+}
+
 TEST(SweepSpec, MistakesNameTheFileAndTheKey) {
   struct Case {
     std::string path;  // JSON pointer to change
@@ -63,7 +71,7 @@ TEST(SweepSpec, MistakesNameTheFileAndTheKey) {
       {"/colour", 1, "colour: unknown key"},
       {"/rows/1/kernel", 3, "rows[1].kernel: unknown key"},
       {"/columns/0/shadow_map", "big", "columns[0].shadow_map: expected an integer"},
-      {"/columns/0/shadow_map", 0, "columns[0].shadow_map: 0 is outside 1..16384"},
+      {"/columns/0/shadow_map", 0, "columns[0].shadow_map: must be an integer in [1, 16384], got 0"},
       {"/settings/size", "160by90", "settings.size: expected WxH"},
       {"/rows/0/paper", json::array({1, 2}), "rows[0].paper: expected an array of 3"},
       {"/rows/0/paper/1", "fast", "rows[0].paper[1]: expected a number or null"},
@@ -75,7 +83,7 @@ TEST(SweepSpec, MistakesNameTheFileAndTheKey) {
       {"/columns/2/scene", "dragon", "columns[2].scene: 'dragon' is not in \"scenes\""},
       {"/measure", "joules", "measure: expected a metric of the metric table"},
       {"/name", "Table 2", "name: expected lower-case"},
-      {"/figure", json{{"column", 7}}, "figure.column: 7 is outside 0..2"},
+      {"/figure", json{{"column", 7}}, "figure.column: must be an integer in [0, 2], got 7"},
   };
   for (const auto& c : cases) {
     json spec = tinySpec();
