@@ -13,7 +13,7 @@ namespace {
 
 using namespace corpus_detail;
 
-constexpr double kCameraFar = 2.2 * kOutdoorGroundHalf;  // the whole ground from its edge
+constexpr double kOutdoorCameraFar = 2.2 * kOutdoorGroundHalf;  // the whole ground from its edge
 constexpr int kWalkFrames = 48;
 constexpr int kWalkFps = 24;
 
@@ -103,7 +103,7 @@ SceneSample sampleOutdoorScene(const CorpusOptions& options, std::size_t index, 
   const glm::dvec3 target = eye + 40.0 * forward;
   Json scene = {{"name", ""},
                 {"comment", ""},
-                {"camera", {{"eye", vec(eye)}, {"target", vec(target)}, {"fov_y", r4(fov)}, {"near", 0.3}, {"far", kCameraFar}}},
+                {"camera", {{"eye", vec(eye)}, {"target", vec(target)}, {"fov_y", r4(fov)}, {"near", 0.3}, {"far", kOutdoorCameraFar}}},
                 {"light", light},
                 {"objects", objects}};
 
