@@ -111,7 +111,7 @@ TEST(Cascades, RecordListsEveryMap) {
                                     "256", "--out", (tmp / "out").string()});
   ASSERT_EQ(run.exitCode, 0) << run.describe();
   const json light = readJson(tmp / "out" / "sm.json").at("light");
-  EXPECT_EQ(light.at("setup"), json({{"cascades", 4}, {"splits", "pssm:0.8"}, {"fit", "view"}}));
+  EXPECT_EQ(light.at("setup"), json({{"cascades", 4}, {"splits", "pssm:0.8"}, {"fit", "view"}, {"bias", "slope"}}));
   const json& maps = light.at("maps");
   ASSERT_EQ(maps.size(), 4u);
   for (std::size_t i = 0; i < maps.size(); ++i) {
