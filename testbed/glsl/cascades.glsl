@@ -14,6 +14,8 @@ uniform int uCascadeCount;
 // float arrays, so each matrix travels as its 16 floats).
 uniform float uCascadeMatrices[kMaxCascades * 16];
 uniform float uCascadeSplitFar[kMaxCascades];  // the far view depth of each split
+uniform float uCascadeSplitNear[kMaxCascades];  // and its near view depth
+uniform float uCascadeBlendBand;  // --blend-band: F, a fraction of a slice's depth; 0 off
 // Each map's projection terms that scale its texels (light.glsl texelWorldSize): P₀₀, P₁₁,
 // P₂₃ and P₃₃ (column-major [column][row]), one map after another.
 uniform float uCascadeProjectionScale[kMaxCascades * 4];
@@ -47,4 +49,16 @@ vec2 cascadeTexelWorld(int cascade, ivec2 mapSize, float viewDepth) {
   p[2][3] = uCascadeProjectionScale[cascade * 4 + 2];
   p[3][3] = uCascadeProjectionScale[cascade * 4 + 3];
   return texelWorldSize(p, mapSize, viewDepth);
+}
+
+// The weight of the next cascade's lookup for a receiver at `world` in `cascade`
+// (--blend-band F, ShadowSetup::blendBand): 0 before the last fraction F of the slice's
+// depth, then rising linearly to 1 at its far split, where the next cascade takes over
+// alone; 0 in the last cascade, which has no next.
+float cascadeBlendWeight(vec3 world, int cascade) {
+  if (uCascadeBlendBand <= 0.0 || cascade >= uCascadeCount - 1) return 0.0;
+  float depth = dot(world - uCascadeEye, uCascadeForward);
+  float farEnd = uCascadeSplitFar[cascade];
+  float start = farEnd - uCascadeBlendBand * (farEnd - uCascadeSplitNear[cascade]);
+  return depth > start ? clamp((depth - start) / (farEnd - start), 0.0, 1.0) : 0.0;
 }

@@ -207,7 +207,8 @@ LightRecord readLight(const Reader& r) {
   if (r.has("setup")) {
     const Reader setup = r["setup"];
     l.setup = LightRecord::Setup{int(setup["cascades"].count()), setup["splits"].text(), setup["fit"].text(),
-                                 setup.has("bias") ? setup["bias"].text() : "slope"};
+                                 setup.has("bias") ? setup["bias"].text() : "slope",
+                                 setup.has("blend_band") ? setup["blend_band"].number() : 0.0};
   }
   return l;
 }
@@ -313,7 +314,7 @@ Record makeRecord(const TechniqueRun& run, const FrameRunner& runner, const std:
                              s.shadowSetup.bias);
   if (!s.shadowSetup.isDefault())
     r.light.setup = LightRecord::Setup{s.shadowSetup.cascades, s.shadowSetup.splitsWord(), s.shadowSetup.fitWord(),
-                                       s.shadowSetup.biasWord()};
+                                       s.shadowSetup.biasWord(), s.shadowSetup.blendBand};
   r.backend = backend;
   return r;
 }
@@ -352,6 +353,7 @@ void to_json(json& out, const LightRecord& l) {
   if (l.setup)
     out["setup"] = {
         {"cascades", l.setup->cascades}, {"splits", l.setup->splits}, {"fit", l.setup->fit}, {"bias", l.setup->bias}};
+  if (l.setup && l.setup->blendBand > 0) out["setup"]["blend_band"] = l.setup->blendBand;
 }
 
 void from_json(const json& value, LightRecord& light) {

@@ -110,6 +110,7 @@ struct LightRecord {
     int cascades = 1;
     std::string splits, fit;
     std::string bias = "slope";  // ShadowSetup::biasWord()
+    double blendBand = 0;        // "blend_band", written where not 0
   };
   std::optional<Setup> setup;
 };

@@ -37,11 +37,12 @@ void ShadowMapScreenBase::renderCascades(const FrameInputs& in, PassTimer& timer
 }
 
 void ShadowMapScreenBase::bindCascades(const Program& program, const FrameInputs& in) const {
-  std::vector<float> matrices(kMaxCascades * 16, 0.0f), splitFar(kMaxCascades, 0.0f);
+  std::vector<float> matrices(kMaxCascades * 16, 0.0f), splitFar(kMaxCascades, 0.0f), splitNear(kMaxCascades, 0.0f);
   std::vector<float> scales(kMaxCascades * 4, 0.0f);
   for (std::size_t i = 0; i < maps_.size(); ++i) {
     const glm::mat4 m = maps_[i].light.viewProjection();
     std::copy_n(&m[0][0], 16, matrices.begin() + std::ptrdiff_t(i * 16));
+    splitNear[i] = float((*maps_[i].split)[0]);
     splitFar[i] = float((*maps_[i].split)[1]);
     const glm::mat4& p = maps_[i].light.projection;  // the terms texelWorldSize() reads
     const float terms[4] = {p[0][0], p[1][1], p[2][3], p[3][3]};
@@ -53,6 +54,8 @@ void ShadowMapScreenBase::bindCascades(const Program& program, const FrameInputs
   program.set("uCascadeCount", int(maps_.size()));
   program.set("uCascadeMatrices", matrices);
   program.set("uCascadeSplitFar", splitFar);
+  program.set("uCascadeSplitNear", splitNear);
+  program.set("uCascadeBlendBand", float(in.shadowSetup.blendBand));
   program.set("uCascadeEye", in.fitCamera.eye);
   program.set("uCascadeForward", glm::normalize(in.fitCamera.target - in.fitCamera.eye));
 }

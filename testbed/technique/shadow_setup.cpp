@@ -122,6 +122,11 @@ void checkShadowSetup(const ShadowSetup& setup) {
   if (setup.fit == MapFit::Scene && setup.cascades > 1)
     throw InputError("--fit scene: fits one map to the whole scene; " + std::to_string(setup.cascades) +
                      " cascades need --fit view or stable");
+  if (!(setup.blendBand >= 0 && setup.blendBand <= 1))
+    throw InputError("--blend-band: expected a fraction of the slice's depth in [0, 1], got " +
+                     std::to_string(setup.blendBand));
+  if (setup.blendBand > 0 && setup.cascades == 1)
+    throw InputError("--blend-band: blends across the splits between cascades; one map has none (--cascades 2 or more)");
 }
 
 void validateShadowSetup(const ShadowSetup& setup, const LightDesc& light, const std::string& sceneFile) {

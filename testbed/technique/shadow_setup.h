@@ -46,6 +46,9 @@ struct ShadowSetup {
   BiasMode bias = BiasMode::Slope;
   double normalOffset = 1.0;       // BiasMode::Normal's k, in map texels
   double receiverPlaneSteps = 2.0;  // BiasMode::ReceiverPlane's c, in 16-bit depth steps
+  // --blend-band F: the last fraction F of each slice's depth (but the last's) blends its
+  // cascade's lookup linearly into the next's, so a split shows no seam; 0 (the default): off.
+  double blendBand = 0.0;
 
   // One map of the frame's light (the default path, unchanged bit for bit, whatever the
   // bias mode: the bias is a uniform of the same shaders).
@@ -65,7 +68,8 @@ struct ShadowSetup {
 ShadowSetup parseShadowSetup(int cascades, const std::string& splits, const std::string& fit,
                              const std::string& bias = "slope");
 // Throws InputError naming the option where the set-up is not one: cascades outside
-// 1..kMaxCascades, or several maps each fitted to the whole scene. parseShadowSetup and the
+// 1..kMaxCascades, several maps each fitted to the whole scene, or a blend band outside
+// [0, 1] or with one map (no split to blend across). parseShadowSetup and the
 // harness (validateSettings) both check through it.
 void checkShadowSetup(const ShadowSetup& setup);
 // Throws InputError where the set-up is undefined for the scene's light: a stable fit
