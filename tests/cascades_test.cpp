@@ -67,6 +67,39 @@ TEST(Cascades, PcfKernelOneIsSmOnCascades) {
   }
 }
 
+// --blend-band F: with F = 0 (the default) sm's cascaded output is binary, as it always
+// was; with F = 0.5 the receivers in the last half of a slice before its split mix the two
+// cascades' tests linearly, so those near a shadow's edge, where the two maps' texels
+// disagree, take values strictly between 0 and 1 (sm's output is then filtered there),
+// every value stays in [0, 1], and the receivers outside the bands keep their F = 0 answer:
+// fewer than half of the receivers change. A stable fit's squares around each slice's
+// sphere overlap the next slice's band, so the band is blended wherever it lies.
+TEST(Cascades, BlendBandMixesTheCascadesNearASplit) {
+  sharedContext();
+  const Scene scene = loadScene(kOutdoor / "sun_field.json");
+  auto sm = [&](double band) {
+    RenderSettings settings = renderSettings({640, 360}, 256);
+    settings.shadowSetup = parseShadowSetup(4, "pssm", "stable");
+    settings.shadowSetup.blendBand = band;
+    FrameRunner runner(scene, settings);
+    return runTechnique(runner, "sm").visibility;
+  };
+  const ImageF off = sm(0), band = sm(0.5);
+  auto between = [](const ImageF& image) {
+    int count = 0;
+    for (float v : image.pixels) count += v > 0.0f && v < 1.0f;
+    return count;
+  };
+  EXPECT_EQ(between(off), 0) << "no band: binary";
+  const int mixed = between(band);
+  std::cout << "sun-field sm, 4 stable cascades, blend band 0.5: " << mixed << " receivers between 0 and 1, "
+            << differingPixels(off, band) << " changed of " << receiversOf(off).count << "\n";
+  EXPECT_GT(mixed, 20);
+  for (float v : band.pixels)
+    if (!std::isnan(v)) ASSERT_TRUE(v >= 0.0f && v <= 1.0f) << v;
+  EXPECT_LT(differingPixels(off, band), receiversOf(off).count / 2);
+}
+
 json readJson(const fs::path& file) { return json::parse(readFile(file)); }
 
 // compare --frames all on the strafe: every technique's sequence record by id.
@@ -111,7 +144,7 @@ TEST(Cascades, RecordListsEveryMap) {
                                     "256", "--out", (tmp / "out").string()});
   ASSERT_EQ(run.exitCode, 0) << run.describe();
   const json light = readJson(tmp / "out" / "sm.json").at("light");
-  EXPECT_EQ(light.at("setup"), json({{"cascades", 4}, {"splits", "pssm:0.8"}, {"fit", "view"}}));
+  EXPECT_EQ(light.at("setup"), json({{"cascades", 4}, {"splits", "pssm:0.8"}, {"fit", "view"}, {"bias", "slope"}}));
   const json& maps = light.at("maps");
   ASSERT_EQ(maps.size(), 4u);
   for (std::size_t i = 0; i < maps.size(); ++i) {
@@ -145,6 +178,9 @@ TEST(Cascades, BadCombinationsAreBadInput) {
       {{"render", "--scene", field, "--technique", "sm", "--cascades", "2", "--fit", "scene"}, "--fit scene"},
       {{"render", "--scene", fence, "--technique", "sm", "--cascades", "2", "--fit", "stable"}, "spot light"},
       {{"render", "--scene", field, "--technique", "smsr", "--cascades", "2"}, "technique 'smsr' does not support"},
+      {{"render", "--scene", field, "--technique", "sm", "--cascades", "2", "--blend-band", "1.5"}, "--blend-band"},
+      {{"render", "--scene", field, "--technique", "sm", "--cascades", "2", "--blend-band", "-0.1"}, "--blend-band"},
+      {{"render", "--scene", field, "--technique", "sm", "--blend-band", "0.2"}, "--blend-band"},
       {{"compare", "--scene", field, "--techniques", "sm,vsm", "--cascades", "4"}, "technique 'vsm' does not support"}};
   for (const auto& [args, message] : cases) {
     const fs::path out = tmp / "bad";

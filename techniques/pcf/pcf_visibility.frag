@@ -1,4 +1,5 @@
 #version 450 core
+#define TESTBED_BIAS_MODES  // the shared set-up's bias modes (testbed/glsl/bias.glsl)
 #include "testbed/glsl/receiver.glsl"
 #include "testbed/glsl/shadow_test.glsl"
 #include "testbed/glsl/kernel.glsl"
@@ -33,7 +34,8 @@ float bilinearPcf(vec2 uv, float depth) {
 }
 
 float screenVisibility(ivec2 pixel, Receiver r, vec3 light) {
-  return uBilinear == 1 ? bilinearPcf(light.xy, light.z) : boxPcf(light.xy, light.z);
+  vec3 lookup = shadowLookup(r, light);
+  return uBilinear == 1 ? bilinearPcf(lookup.xy, lookup.z) : boxPcf(lookup.xy, lookup.z);
 }
 
 #include "testbed/glsl/screen_pass.glsl"

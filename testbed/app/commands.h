@@ -34,12 +34,14 @@ struct CommonOptions {
   RenderSettings settings() const;
 };
 
-// --cascades, --splits and --fit of render and compare: the shadow-map set-up
+// --cascades, --splits, --fit, --bias and --blend-band of render and compare: the shadow-map set-up
 // (technique/shadow_setup.h, docs/cascades.md), the same meaning in both and in sequences.
 struct ShadowSetupOptions {
   int cascades = 1;
   std::string splits = "pssm";
   std::string fit;  // empty: scene for one cascade, view for more
+  std::string bias = "slope";
+  double blendBand = 0.0;
 
   void addTo(CLI::App& command);
   // Parses the words; throws InputError naming the option.

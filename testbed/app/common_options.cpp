@@ -31,9 +31,22 @@ void ShadowSetupOptions::addTo(CLI::App& command) {
   command.add_option("--splits", splits, "split scheme: uniform, log, pssm or pssm:λ (λ in [0, 1], default 0.5)")
       ->capture_default_str();
   command.add_option("--fit", fit, "each map fitted to: scene, view or stable (default: scene for one cascade, view for more)");
+  command.add_option("--bias", bias,
+                     "acne bias: slope (the polygon offset), normal[:k] (normal offset, k texels, default 1) or "
+                     "receiver-plane[:c] (c 16-bit depth steps, default 2); docs/cascades.md")
+      ->capture_default_str();
+  command.add_option("--blend-band", blendBand,
+                     "fraction F of each slice's depth, before its split, blending its cascade into the next "
+                     "(0: off; docs/cascades.md)")
+      ->capture_default_str();
 }
 
-ShadowSetup ShadowSetupOptions::setup() const { return parseShadowSetup(cascades, splits, fit); }
+ShadowSetup ShadowSetupOptions::setup() const {
+  ShadowSetup setup = parseShadowSetup(cascades, splits, fit, bias);
+  setup.blendBand = blendBand;
+  checkShadowSetup(setup);
+  return setup;
+}
 
 void ShadowSetupOptions::check(const ShadowSetup& setup, const Scene& scene, const std::string& sceneFile,
                                const std::vector<const RegisteredTechnique*>& techniques) const {

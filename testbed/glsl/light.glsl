@@ -73,15 +73,19 @@ vec2 receiverPlaneDepthGradientFromSteps(vec3 dx, vec3 dy) {
 // silhouettes. A projective map sends planes to planes, so the light coordinates of the
 // plane are affine in (u, v) for a spot light too: the finite steps give the exact gradient
 // (up to rounding), whatever their length.
-vec2 receiverPlaneDepthGradient(vec3 position, vec3 normal) {
+// The first form takes the map's world → clip transform (a cascade's), the second the light's.
+vec2 receiverPlaneDepthGradient(mat4 lightViewProjection, vec3 position, vec3 normal) {
   vec3 helper = abs(normal.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
   vec3 t1 = normalize(cross(normal, helper));
   vec3 t2 = cross(normal, t1);
   // Steps small against the distance to the light keep both points in front of a spot light.
   float reach = 0.01 * (uLightOrthographic == 1 ? uLightExtent : lightViewDepthOf(position));
-  vec3 centre = lightCoordinates(position);
-  return receiverPlaneDepthGradientFromSteps(lightCoordinates(position + reach * t1) - centre,
-                                             lightCoordinates(position + reach * t2) - centre);
+  vec3 centre = lightCoordinates(lightViewProjection, position);
+  return receiverPlaneDepthGradientFromSteps(lightCoordinates(lightViewProjection, position + reach * t1) - centre,
+                                             lightCoordinates(lightViewProjection, position + reach * t2) - centre);
+}
+vec2 receiverPlaneDepthGradient(vec3 position, vec3 normal) {
+  return receiverPlaneDepthGradient(uLightViewProjection, position, normal);
 }
 
 // The receiver's depth at the tap `offset` (in uv) from its own coordinates `light`.

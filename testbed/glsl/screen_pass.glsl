@@ -60,6 +60,19 @@ void main() {
     if (!screenClassify(pixel, r, light, v)) gl_FragDepth = 0.0;
 #else
     v = screenVisibility(pixel, r, light);
+#ifdef TESTBED_CASCADES
+    // In a blend band (cascades.glsl cascadeBlendWeight) the next cascade's answer is mixed
+    // in linearly, where the receiver lies in that map's square too (a view fit crops each
+    // map to its own slice, which the band, before the split, may leave).
+    float w = cascadeBlendWeight(r.position, gCascade);
+    if (w > 0.0) {
+      vec3 next = lightSpace(cascadeViewProjection(gCascade + 1), r.position);
+      if (insideLightFrustum(next)) {
+        gCascade += 1;
+        v = mix(v, screenVisibility(pixel, r, next), w);
+      }
+    }
+#endif
 #endif
   }
   screenWrite(r, v);

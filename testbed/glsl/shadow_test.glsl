@@ -10,6 +10,10 @@
 uniform sampler2D uShadowMap;
 #endif
 uniform ivec2 uShadowMapSize;  // a map's size (each cascade's)
+// The set-up's bias modes, for a shader that takes them (shadowLookup, biasedTap).
+#ifdef TESTBED_BIAS_MODES
+#include "testbed/glsl/bias.glsl"
+#endif
 
 // The comparison itself, the one every test below makes.
 float shadowCompare(float stored, float depth, float bias) { return depth - bias <= stored ? 1.0 : 0.0; }
@@ -20,11 +24,17 @@ float shadowTest(sampler2D map, vec2 uv, float depth, float bias) {
 float shadowTest(sampler2DArray maps, int layer, vec2 uv, float depth, float bias) {
   return shadowCompare(texture(maps, vec3(uv, float(layer))).r, depth, bias);
 }
-#ifdef TESTBED_CASCADES
-float shadowTest(vec2 uv, float depth, float bias) { return shadowTest(uShadowMaps, gCascade, uv, depth, bias); }
-#else
-float shadowTest(vec2 uv, float depth, float bias) { return shadowTest(uShadowMap, uv, depth, bias); }
+// With TESTBED_BIAS_MODES, this form takes the tap as the run's bias mode compares it.
+float shadowTest(vec2 uv, float depth, float bias) {
+#ifdef TESTBED_BIAS_MODES
+  biasedTap(uv, depth);
 #endif
+#ifdef TESTBED_CASCADES
+  return shadowTest(uShadowMaps, gCascade, uv, depth, bias);
+#else
+  return shadowTest(uShadowMap, uv, depth, bias);
+#endif
+}
 
 // The same at an explicit texel of a map of `size` texels (neighbour tests of the
 // revectorization family): the nearest lookup at the texel's centre.

@@ -162,7 +162,9 @@ LightRecord readLight(const Reader& r) {
   }
   if (r.has("setup")) {
     const Reader setup = r["setup"];
-    l.setup = LightRecord::Setup{int(setup["cascades"].count()), setup["splits"].text(), setup["fit"].text()};
+    l.setup = LightRecord::Setup{int(setup["cascades"].count()), setup["splits"].text(), setup["fit"].text(),
+                                 setup.has("bias") ? setup["bias"].text() : "slope",
+                                 setup.has("blend_band") ? setup["blend_band"].number() : 0.0};
   }
   return l;
 }
@@ -257,9 +259,11 @@ Record makeRecord(const TechniqueRun& run, const FrameRunner& runner, const std:
   r.path = runner.path();
   r.shaderPath = shaderPath();
   r.work = run.times.work;
-  r.light = lightSetupRecord(runner.light(), s.shadowMapSize, s.depthFormat, run.params, run.maps);
-  if (!s.shadowSetup.single())
-    r.light.setup = LightRecord::Setup{s.shadowSetup.cascades, s.shadowSetup.splitsWord(), s.shadowSetup.fitWord()};
+  r.light = lightSetupRecord(runner.light(), s.shadowMapSize, s.depthFormat, run.params, run.maps,
+                             s.shadowSetup.bias);
+  if (!s.shadowSetup.isDefault())
+    r.light.setup = LightRecord::Setup{s.shadowSetup.cascades, s.shadowSetup.splitsWord(), s.shadowSetup.fitWord(),
+                                       s.shadowSetup.biasWord(), s.shadowSetup.blendBand};
   r.backend = backend;
   return r;
 }
@@ -284,7 +288,10 @@ void to_json(json& out, const LightRecord& l) {
   if (l.offsetWorld) out["offset_world"] = json::array({(*l.offsetWorld)[0], (*l.offsetWorld)[1]});
   if (l.split) out["split"] = json::array({(*l.split)[0], (*l.split)[1]});
   if (!l.maps.empty()) out["maps"] = l.maps;
-  if (l.setup) out["setup"] = {{"cascades", l.setup->cascades}, {"splits", l.setup->splits}, {"fit", l.setup->fit}};
+  if (l.setup)
+    out["setup"] = {
+        {"cascades", l.setup->cascades}, {"splits", l.setup->splits}, {"fit", l.setup->fit}, {"bias", l.setup->bias}};
+  if (l.setup && l.setup->blendBand > 0) out["setup"]["blend_band"] = l.setup->blendBand;
 }
 
 void from_json(const json& value, LightRecord& light) { light = readLight(Reader(value, "", "light")); }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,8 +24,11 @@ namespace testbed {
 namespace {
 
 // PROBE(a, b) = `expression` for each pair (a[i], b[i]), with `light`'s uniforms bound.
+// `defines` and `bind` (the other uniforms its code reads) for the bias modes' helpers.
 std::vector<glm::vec4> probe(const std::string& expression, const LightTransforms& light, float radius,
-                             const std::vector<glm::vec4>& a, std::vector<glm::vec4> b = {}) {
+                             const std::vector<glm::vec4>& a, std::vector<glm::vec4> b = {},
+                             const std::string& defines = "",
+                             const std::function<void(const Program&)>& bind = [](const Program&) {}) {
   test::sharedContext();
   if (b.empty()) b = a;
   const int n = static_cast<int>(a.size());
@@ -39,12 +43,13 @@ std::vector<glm::vec4> probe(const std::string& expression, const LightTransform
   target.attachColor(0, output);
   target.finish({0});
   const Program program = Program::graphics("testbed/render/fullscreen.vert", "testbed/render/light_probe.frag",
-                                            "#define PROBE(a, b) (" + expression + ")\n");
+                                            defines + "#define PROBE(a, b) (" + expression + ")\n");
   glBindTextureUnit(kProbeATextureUnit, inputA.id());
   glBindTextureUnit(kProbeBTextureUnit, inputB.id());
   program.set("uA", kProbeATextureUnit);
   program.set("uB", kProbeBTextureUnit);
   bindLightUniforms(program, light, radius);
+  bind(program);
   ScreenPass().draw(program, target, {n, 1});
   const std::vector<float> raw = output.readFloats(4);
   checkGlError("probing light.glsl");
@@ -209,6 +214,87 @@ TEST(LightGlsl, TexelWorldSizeIsTheCppValue) {
   const auto gpu = probe("vec4(texelWorldSize(uLightProjection, ivec2(512), 3.0), 0, 0)", cropped, 0.0f, {glm::vec4(0)});
   EXPECT_NEAR(gpu[0].x, cpu.x, 1e-5 * cpu.x);
   EXPECT_NEAR(gpu[0].y, cpu.y, 1e-5 * cpu.y);
+}
+
+// The bias modes' helpers (glsl/bias.glsl) on the known plane y = x/2 under sun(), a map of
+// 16² texels of 1 world unit: the probe defines TESTBED_BIAS_MODES and sets the mode's
+// uniforms as ShadowMapScreenBase::bindBias does.
+const glm::vec3 kPlaneNormal = glm::normalize(glm::vec3(-0.5f, 1.0f, 0.0f));
+const char* const kPlaneNormalGlsl = "normalize(vec3(-0.5, 1.0, 0.0))";
+
+std::function<void(const Program&)> biasUniforms(int mode, float normalOffset, float receiverPlaneBias) {
+  return [=](const Program& program) {
+    program.set("uShadowMapSize", glm::ivec2(16));
+    program.set("uBiasMode", mode);
+    program.set("uNormalOffset", normalOffset);
+    program.set("uReceiverPlaneBias", receiverPlaneBias);
+  };
+}
+
+// The point of the plane y = x/2 whose map coordinates are `uv` (the map's uv is affine in
+// the plane's x and z).
+glm::vec3 planePointAt(const LightTransforms& light, const glm::vec2& uv) {
+  auto on = [](float x, float z) { return glm::vec3(x, 0.5f * x, z); };
+  const glm::vec2 o(mapCoordinates(light, on(0, 0))), ex = glm::vec2(mapCoordinates(light, on(1, 0))) - o,
+      ez = glm::vec2(mapCoordinates(light, on(0, 1))) - o;
+  const glm::vec2 xz = glm::inverse(glm::mat2(ex, ez)) * (uv - o);
+  return on(xz.x, xz.y);
+}
+
+// Receiver-plane depth bias: each tap compares the plane's depth at the centre of the texel
+// the tap reads, less the constant (here 3 16-bit steps) — the depth the map stores there
+// for this plane, up to its rounding.
+TEST(BiasGlsl, ReceiverPlaneTapDepthIsThePlanesDepthAtTheTexelCentre) {
+  const LightTransforms light = sun();
+  const glm::vec3 receiver(0.3f, 0.15f, 0.2f);
+  const glm::vec3 own = mapCoordinates(light, receiver);
+  const float constant = 3 * kDepthStep16;
+  std::vector<glm::vec4> a, b;
+  std::vector<float> expected;
+  for (const glm::ivec2 step : {glm::ivec2(0, 0), glm::ivec2(1, 0), glm::ivec2(-1, 1), glm::ivec2(2, -2)}) {
+    const glm::vec2 tap = glm::vec2(own) + glm::vec2(step) / 16.0f;
+    const glm::vec2 centre = (glm::floor(tap * 16.0f) + 0.5f) / 16.0f;
+    a.emplace_back(receiver, 0.0f);
+    b.emplace_back(tap, 0.0f, 0.0f);
+    expected.push_back(mapCoordinates(light, planePointAt(light, centre)).z - constant);
+  }
+  // The tap's uv moves to its texel's centre and its depth is the plane's there.
+  auto tapWith = [&](const std::string& depth) {
+    return "probeBiasedTap(a.xyz, " + std::string(kPlaneNormalGlsl) + ", b.xy, " + depth + ")";
+  };
+  const std::string defines = "#define TESTBED_BIAS_MODES\n";
+  const auto plane = probe(tapWith("lightCoordinates(a.xyz).z"), light, 0.0f, a, b, defines,
+                           biasUniforms(2, 0.0f, constant));
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    const glm::vec2 centre = (glm::floor(glm::vec2(b[i]) * 16.0f) + 0.5f) / 16.0f;
+    EXPECT_NEAR(plane[i].x, centre.x, 1e-7f) << "tap " << i;
+    EXPECT_NEAR(plane[i].y, centre.y, 1e-7f) << "tap " << i;
+    EXPECT_NEAR(plane[i].z, expected[i], 2e-6f) << "tap " << i;
+  }
+  // The slope bias leaves the tap alone, bit for bit.
+  const auto slope = probe(tapWith("0.123456789"), light, 0.0f, a, b, defines, biasUniforms(0, 1.0f, constant));
+  EXPECT_EQ(slope[1].x, b[1].x);
+  EXPECT_EQ(slope[1].y, b[1].y);
+  EXPECT_EQ(slope[1].z, 0.123456789f);
+}
+
+// Normal offset: the lookup is the map coordinates of the receiver moved k texels (1 world
+// unit each here) × sin θ along its normal; the slope bias looks the receiver itself up.
+TEST(BiasGlsl, NormalOffsetMovesTheLookupAlongTheNormal) {
+  const LightTransforms light = sun();
+  const glm::vec3 receiver(0.3f, 0.15f, 0.2f);
+  const float k = 1.5f, cosTheta = glm::dot(kPlaneNormal, glm::vec3(0, 1, 0));
+  const glm::vec3 expected =
+      mapCoordinates(light, receiver + kPlaneNormal * (k * 1.0f * std::sqrt(1 - cosTheta * cosTheta)));
+  const std::string lookup =
+      "vec4(shadowLookup(Receiver(a.xyz, " + std::string(kPlaneNormalGlsl) + "), lightCoordinates(a.xyz)), 0)";
+  const auto normal = probe(lookup, light, 0.0f, {glm::vec4(receiver, 0)}, {}, "#define TESTBED_BIAS_MODES\n",
+                            biasUniforms(1, k, 0.0f));
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(normal[0][i], expected[i], 1e-6f) << i;
+  const auto slope = probe(lookup, light, 0.0f, {glm::vec4(receiver, 0)}, {}, "#define TESTBED_BIAS_MODES\n",
+                           biasUniforms(0, k, 0.0f));
+  const glm::vec3 own = mapCoordinates(light, receiver);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(slope[0][i], own[i], 1e-7f) << i;
 }
 
 }  // namespace

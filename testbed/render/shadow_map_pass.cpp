@@ -39,6 +39,15 @@ float polygonOffsetUnits(DepthFormat format, float units16) {
 }
 }  // namespace
 
+ShadowMapPass::Parameters ShadowMapPass::appliedOffset(const Parameters& parameters, BiasMode bias) {
+  switch (bias) {
+    case BiasMode::Slope: return parameters;
+    case BiasMode::Normal: return {.offsetFactor = 0.0f, .offsetUnits = parameters.offsetUnits};
+    case BiasMode::ReceiverPlane: return {.offsetFactor = 0.0f, .offsetUnits = 0.0f};
+  }
+  return parameters;
+}
+
 PassDeclaration ShadowMapPass::declaredPass() {
   return declaredPass("shadow-map", "the light's depth map (Williams, SIGGRAPH 1978)");
 }
@@ -121,7 +130,7 @@ void ShadowMapPass::render(const FrameInputs& in, const ViewProjection& light, c
 }
 
 LightRecord lightSetupRecord(const LightTransforms& light, int shadowMapSize, DepthFormat format,
-                             const nlohmann::json& params, const std::vector<ShadowMapUse>& maps) {
+                             const nlohmann::json& params, const std::vector<ShadowMapUse>& maps, BiasMode bias) {
   const int bits = format == DepthFormat::D16 ? 16 : 24;  // 32f: its r in [0.5, 1), 2^-24
   auto texel = [&](double depth) {
     const double half = light.orthographic ? light.extent : depth * std::tan(glm::radians(double(light.fovDegrees)) / 2);
@@ -141,12 +150,14 @@ LightRecord lightSetupRecord(const LightTransforms& light, int shadowMapSize, De
   else
     record.fov = light.fovDegrees;
   if (params.contains("offset_units") && params.contains("offset_factor")) {
-    const double units = params["offset_units"].get<double>(), factor = params["offset_factor"].get<double>();
+    // What appliedOffset keeps of the technique's offset (in doubles, as the JSON has them).
+    const double units = bias == BiasMode::ReceiverPlane ? 0.0 : params["offset_units"].get<double>();
+    const double factor = bias == BiasMode::Slope ? params["offset_factor"].get<double>() : 0.0;
     record.offsetWorld =
         atPlanes([&](double d) { return units * depthStepWorld(light, 16, d) + factor * texel(d); });
   }
   for (const ShadowMapUse& map : maps) {
-    record.maps.push_back(lightSetupRecord(map.light, shadowMapSize, format, params));
+    record.maps.push_back(lightSetupRecord(map.light, shadowMapSize, format, params, {}, bias));
     record.maps.back().split = map.split;
   }
   return record;

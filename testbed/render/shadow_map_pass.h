@@ -40,6 +40,11 @@ class ShadowMapPass {
     void reflect(ParameterBinder& b, PolygonOffsetDefaults defaults = {});
   };
   void configure(const Parameters& parameters) { parameters_ = parameters; }
+  // The polygon offset a bias mode applies of the technique's (docs/cascades.md "Bias
+  // modes"): all of it with the slope bias; the constant term only with the normal offset,
+  // which replaces the slope term; none with the receiver-plane bias, whose plane and
+  // constant replace both.
+  static Parameters appliedOffset(const Parameters& parameters, BiasMode bias);
 
   // Its pass and its map as the techniques that use it declare them (declaration.h). A
   // technique rendering several maps (cascades) declares a pass per render it times
@@ -99,15 +104,21 @@ struct LightRecord {
   // described like the light; none (the JSON has no "maps"): the one map of the light.
   std::vector<LightRecord> maps;
   // The shadow-map set-up (technique/shadow_setup.h) where it is not the default: "setup":
-  // {"cascades", "splits", "fit"}; none, one map fitted to the scene.
+  // {"cascades", "splits", "fit", "bias"}; none, one map fitted to the scene with the slope
+  // bias. A record without "bias" (before the bias modes) had the slope bias.
   struct Setup {
     int cascades = 1;
     std::string splits, fit;
+    std::string bias = "slope";  // ShadowSetup::biasWord()
+    double blendBand = 0;        // "blend_band", written where not 0
   };
   std::optional<Setup> setup;
 };
+// `bias`: the run's bias mode, which decides what of the technique's polygon offset is
+// applied (appliedOffset) and so what offset_world states.
 LightRecord lightSetupRecord(const LightTransforms& light, int shadowMapSize, DepthFormat format,
-                             const nlohmann::json& params, const std::vector<ShadowMapUse>& maps = {});
+                             const nlohmann::json& params, const std::vector<ShadowMapUse>& maps = {},
+                             BiasMode bias = BiasMode::Slope);
 
 // `bias` of glsl/shadow_test.glsl (uBias), shared by every technique that uses the test.
 void reflectShadowTestBias(ParameterBinder& b, float& bias);

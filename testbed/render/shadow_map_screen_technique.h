@@ -37,7 +37,9 @@ class ShadowMapScreenBase : public ShadowTechnique {
   // `fragmentKey`: the embedded shader of the screen pass; `passName`: its timer scope.
   explicit ShadowMapScreenBase(std::string fragmentKey, std::string passName = "visibility")
       : fragmentKey_(std::move(fragmentKey)), passName_(std::move(passName)) {}
-  void configureShadowMap(const ShadowMapPass::Parameters& parameters) { shadowMap_.configure(parameters); }
+  // The technique's polygon offset; each frame applies what the run's bias mode keeps of it
+  // (ShadowMapPass::appliedOffset).
+  void configureShadowMap(const ShadowMapPass::Parameters& parameters) { offset_ = parameters; }
   // The technique's own uniforms of the screen pass, set before each draw. `in` is the
   // frame's (its light, camera, scene, sizes): what a technique needs per frame comes
   // from here, so none copies render()'s body. The receiver's, the light's
@@ -50,9 +52,12 @@ class ShadowMapScreenBase : public ShadowTechnique {
   // The set-up's maps into the array's layers, bound with glsl/cascades.glsl's uniforms.
   void renderCascades(const FrameInputs& in, PassTimer& timer);
   void bindCascades(const Program& program, const FrameInputs& in) const;
+  // glsl/bias.glsl's uniforms, where the technique's shader reads them (shadowLookup).
+  static void bindBias(const Program& program, const ShadowSetup& setup);
 
   std::string fragmentKey_, passName_;
   ShadowMapPass shadowMap_;
+  ShadowMapPass::Parameters offset_{};
   ScreenPass screen_;
   Program program_, cascadeProgram_;  // cascadeProgram_: compiled with TESTBED_CASCADES
   std::vector<ShadowMapUse> maps_;

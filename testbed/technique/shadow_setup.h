@@ -1,9 +1,11 @@
 #pragma once
 // The shadow-map set-up of a run, shared by every technique that supports it (docs/cascades.md):
 // how many maps (cascades) cover the camera's view, how its depth range is split among
-// them and how each map is fitted. `render` and `compare` take it as --cascades, --splits
-// and --fit (testbed/app/common_options.cpp); the harness hands it to the technique in
-// FrameInputs; the default, one map fitted to the scene, is the testbed's original set-up.
+// them, how each map is fitted and how acne is kept off lit receivers (the bias mode).
+// `render` and `compare` take it as --cascades, --splits, --fit and --bias
+// (testbed/app/common_options.cpp); the harness hands it to the technique in FrameInputs;
+// the default, one map fitted to the scene with the slope-scaled polygon offset, is the
+// testbed's original set-up.
 #include <string>
 #include <vector>
 
@@ -21,6 +23,17 @@ enum class SplitScheme { Uniform, Log, Practical };
 // camera that only translates or rotates moves no texel (directional light only).
 enum class MapFit { Scene, View, Stable };
 
+// How a lit receiver is kept from shadowing itself (docs/cascades.md "Bias modes"):
+//   Slope: the shadow-map pass's slope-scaled polygon offset (the technique's
+//     offset_factor and offset_units), the testbed's original bias;
+//   Normal: the lookup moves along the receiver's normal by k map texels' world size × sin θ
+//     (θ between normal and light; Holbert, "Normal offset shadows", GDC 2011); the polygon
+//     offset keeps its constant term (offset_units) and drops its slope term;
+//   ReceiverPlane: each tap compares the depth of the receiver's plane at the tap's texel
+//     centre, less a constant of c 16-bit depth steps (Isidoro, "Shadow mapping: GPU-based
+//     tips and techniques", GDC 2006); the polygon offset is off.
+enum class BiasMode { Slope, Normal, ReceiverPlane };
+
 // The most cascades a run may ask for: glsl/cascades.glsl's kMaxCascades, and at most
 // declaration.h's kMostTexturesOfASize layers of one array.
 inline constexpr int kMaxCascades = 4;
@@ -30,20 +43,33 @@ struct ShadowSetup {
   SplitScheme splits = SplitScheme::Practical;
   double lambda = 0.5;  // SplitScheme::Practical's λ
   MapFit fit = MapFit::Scene;
+  BiasMode bias = BiasMode::Slope;
+  double normalOffset = 1.0;       // BiasMode::Normal's k, in map texels
+  double receiverPlaneSteps = 2.0;  // BiasMode::ReceiverPlane's c, in 16-bit depth steps
+  // --blend-band F: the last fraction F of each slice's depth (but the last's) blends its
+  // cascade's lookup linearly into the next's, so a split shows no seam; 0 (the default): off.
+  double blendBand = 0.0;
 
-  // The testbed's original set-up: one map of the frame's light (the default path,
-  // unchanged bit for bit).
+  // One map of the frame's light (the default path, unchanged bit for bit, whatever the
+  // bias mode: the bias is a uniform of the same shaders).
   bool single() const { return cascades == 1 && fit == MapFit::Scene; }
+  // The testbed's original set-up: one map and the slope-scaled polygon offset.
+  bool isDefault() const { return single() && bias == BiasMode::Slope; }
   std::string splitsWord() const;  // "uniform", "log", "pssm:0.5"
   std::string fitWord() const;     // "scene", "view", "stable"
+  std::string biasWord() const;    // "slope", "normal:1", "receiver-plane:2"
   bool operator==(const ShadowSetup&) const = default;
 };
 
-// The set-up from the options' words; `fit` empty: scene for one cascade, view for more.
-// Throws InputError naming the option (--cascades, --splits, --fit) and the value.
-ShadowSetup parseShadowSetup(int cascades, const std::string& splits, const std::string& fit);
+// The set-up from the options' words; `fit` empty: scene for one cascade, view for more;
+// `bias`: slope, normal[:k] (k in [0, 16] texels, default 1) or receiver-plane[:c] (c in
+// [0, 1000] 16-bit depth steps, default 2). Throws InputError naming the option (--cascades,
+// --splits, --fit, --bias) and the value.
+ShadowSetup parseShadowSetup(int cascades, const std::string& splits, const std::string& fit,
+                             const std::string& bias = "slope");
 // Throws InputError naming the option where the set-up is not one: cascades outside
-// 1..kMaxCascades, or several maps each fitted to the whole scene. parseShadowSetup and the
+// 1..kMaxCascades, several maps each fitted to the whole scene, or a blend band outside
+// [0, 1] or with one map (no split to blend across). parseShadowSetup and the
 // harness (validateSettings) both check through it.
 void checkShadowSetup(const ShadowSetup& setup);
 // Throws InputError where the set-up is undefined for the scene's light: a stable fit
