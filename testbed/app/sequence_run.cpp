@@ -56,8 +56,9 @@ std::vector<nlohmann::json> runSequence(const SequenceJob& job, Scene& scene, Fr
   std::vector<FrameSheet> shadedSheets, errorSheets;
   if (job.compare)
     for (std::size_t e = 0; e < job.entries.size(); ++e) {
-      shadedSheets.emplace_back(size, job.range.count(), 3);
-      errorSheets.emplace_back(size, job.range.count(), 3);
+      const std::string& id = job.entries[e].technique->info->id;
+      shadedSheets.emplace_back(size, job.range.count(), 3, work.path() / (id + "_frames_shaded.raw"));
+      errorSheets.emplace_back(size, job.range.count(), 3, work.path() / (id + "_frames_error.raw"));
     }
   const auto addVideoFrame = [&](const SequenceFrame& f) {
     const ImageF shaded = runner.shade(f.run->visibility);

@@ -3,6 +3,8 @@
 // frame of one technique's images, shrunk by a whole factor to a bounded size, laid out in
 // a grid on one image (a sheet), so a page of 120 frames × 15 runs loads a few images, not
 // thousands, and any frame can be stepped to, flipped against the reference and zoomed.
+#include <filesystem>
+
 #include <glm/glm.hpp>
 
 #include "testbed/io/image_io.h"
@@ -26,19 +28,23 @@ inline constexpr int kSheetMaxWidth = 4096;
 SheetLayout sheetLayout(glm::ivec2 size, int count, int maxSide = kSheetMaxSide, long maxPixels = kSheetMaxPixels,
                         int maxWidth = kSheetMaxWidth);
 
+// A sheet built on disk: every kept frame goes to `spill` (8-bit, as the PNG will hold it)
+// as it comes, so a run of many techniques holds no sheet in memory until it writes one.
 class FrameSheet {
  public:
-  FrameSheet(glm::ivec2 size, int count, int channels);
+  FrameSheet(glm::ivec2 size, int count, int channels, std::filesystem::path spill);
   const SheetLayout& layout() const { return layout_; }
   // Frame `index` (0-based within the run) of the run's size: each kept pixel the mean of
   // its factor² block.
   void add(int index, const ImageF& frame);
-  const ImageF& image() const { return sheet_; }
+  // The sheet so far (frames not added are black), read back from the spill file.
+  ImageF image() const;
 
  private:
   glm::ivec2 size_;
+  int channels_;
   SheetLayout layout_;
-  ImageF sheet_;
+  std::filesystem::path spill_;
 };
 
 }  // namespace testbed

@@ -4,7 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
 #include <stdexcept>
+#include <string>
 
 namespace testbed {
 namespace {
@@ -32,18 +36,21 @@ TEST(FrameSheet, KeptSizeIsBoundedBySideAndBySheet) {
 
 TEST(FrameSheet, FramesLandInTheirCellsAsBlockMeans) {
   // 1200×4 frames: factor 3 (1200 / 480 = 2.5), kept 400×1; ten fit a 4096 px row.
-  FrameSheet sheet({1200, 4}, 10, 1);
+  const auto spill = std::filesystem::temp_directory_path() / ("frame_sheet_test_" + std::to_string(::getpid()));
+  FrameSheet sheet({1200, 4}, 10, 1, spill);
   ASSERT_EQ(sheet.layout().factor, 3);
   ASSERT_EQ(sheet.layout().frameSize, glm::ivec2(400, 1));
   ASSERT_EQ(sheet.layout().columns, 10);
   ImageF frame{1200, 4, 1, std::vector<float>(1200 * 4, 0.0f)};
-  for (int x = 0; x < 3; ++x) frame.pixels[x] = 0.9f;  // the first block: three of nine lit
+  for (int x = 0; x < 3; ++x) frame.pixels[x] = 0.6f;  // the first block: three of nine at 0.6
   sheet.add(7, frame);
-  EXPECT_FLOAT_EQ(sheet.image().at(7 * 400, 0), 0.3f);
-  EXPECT_FLOAT_EQ(sheet.image().at(7 * 400 + 1, 0), 0.0f);
-  EXPECT_FLOAT_EQ(sheet.image().at(0, 0), 0.0f);  // frame 0 not added
+  const ImageF image = sheet.image();  // 8-bit, as the PNG holds it
+  EXPECT_FLOAT_EQ(image.at(7 * 400, 0), 51 / 255.0f);  // mean 0.2
+  EXPECT_FLOAT_EQ(image.at(7 * 400 + 1, 0), 0.0f);
+  EXPECT_FLOAT_EQ(image.at(0, 0), 0.0f);  // frame 0 not added
   EXPECT_THROW(sheet.add(10, frame), std::invalid_argument);
   EXPECT_THROW(sheet.add(0, ImageF{600, 4, 1, std::vector<float>(600 * 4)}), std::invalid_argument);
+  std::filesystem::remove(spill);
 }
 
 }  // namespace
