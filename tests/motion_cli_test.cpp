@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "testbed/report/frame_sheet.h"
 #include "tests/cli_helpers.h"
 #include "testbed_test_paths.h"
 
@@ -95,6 +96,12 @@ TEST(MotionCli, RenderWritesASequenceWithoutTemporalFigures) {
   EXPECT_EQ(sm.at("frames").at("first").get<int>(), 46);
   EXPECT_FALSE(sm.contains("temporal"));
   EXPECT_TRUE(fs::is_regular_file(out / "sm.mp4"));
+  // Both frames kept on the shaded sheet (no error sheet without a comparison), so one frame
+  // can be looked at without a video decoder.
+  const testbed::SheetLayout layout = testbed::sheetLayout({sm.at("width").get<int>(), sm.at("height").get<int>()}, 2);
+  const testbed::ImageF sheet = testbed::readImage(out / "sm_frames_shaded.png");
+  EXPECT_EQ(glm::ivec2(sheet.width, sheet.height), layout.sheetSize());
+  EXPECT_FALSE(fs::exists(out / "sm_frames_error.png"));
 }
 
 TEST(MotionCli, BadFramesAndBadAnimationBlocksAreRefused) {

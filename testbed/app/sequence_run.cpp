@@ -37,7 +37,8 @@ std::vector<std::string> sequenceOutputNames(const SequenceJob& job) {
   for (const auto& e : job.entries) {
     const std::string& id = e.technique->info->id;
     for (const char* suffix : {"_frames.json", "_sequence.json", ".mp4"}) names.push_back(id + suffix);
-    if (job.compare) names.insert(names.end(), {id + "_frames_shaded.png", id + "_frames_error.png"});
+    names.push_back(id + "_frames_shaded.png");
+    if (job.compare) names.push_back(id + "_frames_error.png");
     if (job.compare && job.plots) names.push_back(id + "_error_over_time.png");
   }
   return names;
@@ -52,20 +53,21 @@ std::vector<nlohmann::json> runSequence(const SequenceJob& job, Scene& scene, Fr
   for (const auto& entry : job.entries)  // compared: shaded | error heat map; otherwise the shaded image alone
     videos.push_back(std::make_unique<VideoWriter>(work.path() / (entry.technique->info->id + ".mp4"),
                                                    size.x * (job.compare ? 2 : 1), size.y, fps));
-  // Compared: every frame also kept, shrunk, on the page's frame viewer's sheets.
+  // Every frame also kept, shrunk, on sheets (report/frame_sheet.h): the shaded image, and
+  // when compared the error heat map, for the page's frame viewer and for looking at one
+  // frame without a video decoder.
   std::vector<FrameSheet> shadedSheets, errorSheets;
-  if (job.compare)
-    for (std::size_t e = 0; e < job.entries.size(); ++e) {
-      const std::string& id = job.entries[e].technique->info->id;
-      shadedSheets.emplace_back(size, job.range.count(), 3, work.path() / (id + "_frames_shaded.raw"));
-      errorSheets.emplace_back(size, job.range.count(), 3, work.path() / (id + "_frames_error.raw"));
-    }
+  for (std::size_t e = 0; e < job.entries.size(); ++e) {
+    const std::string& id = job.entries[e].technique->info->id;
+    shadedSheets.emplace_back(size, job.range.count(), 3, work.path() / (id + "_frames_shaded.raw"));
+    if (job.compare) errorSheets.emplace_back(size, job.range.count(), 3, work.path() / (id + "_frames_error.raw"));
+  }
   const auto addVideoFrame = [&](const SequenceFrame& f) {
     const ImageF shaded = runner.shade(f.run->visibility);
+    shadedSheets[f.entry].add(f.index, shaded);
     if (!f.truth) return videos[f.entry]->addFrame(shaded);
     const ImageF error = errorHeatMap(f.run->visibility, *f.truth);
     videos[f.entry]->addFrame(sideBySide(shaded, error));
-    shadedSheets[f.entry].add(f.index, shaded);
     errorSheets[f.entry].add(f.index, error);
   };
   const std::vector<SequenceOutcome> outcomes =
@@ -77,17 +79,15 @@ std::vector<nlohmann::json> runSequence(const SequenceJob& job, Scene& scene, Fr
   ProgressReporter progress(outcomes.size());
   for (std::size_t e = 0; e < outcomes.size(); ++e) {
     const std::string& id = job.entries[e].technique->info->id;
-    progress.begin(id + ": encoding" + (job.compare ? ", frame sheets" : "") + (job.compare && job.plots ? ", plot" : ""));
+    progress.begin(id + ": encoding, frame sheets" + std::string(job.compare && job.plots ? ", plot" : ""));
     videos[e]->finish();
     files.writeText(id + ".mp4", WorkFolder::read(videos[e]->path()));
     const std::string frames = outcomes[e].frames.dump(2) + "\n";
     files.writeText(id + "_frames.json", frames);
     records.push_back(outcomes[e].record);
     files.writeText(id + "_sequence.json", records.back().dump(2) + "\n");
-    if (job.compare) {
-      files.writeImage(id + "_frames_shaded.png", shadedSheets[e].image());
-      files.writeImage(id + "_frames_error.png", errorSheets[e].image());
-    }
+    files.writeImage(id + "_frames_shaded.png", shadedSheets[e].image());
+    if (job.compare) files.writeImage(id + "_frames_error.png", errorSheets[e].image());
     if (job.compare && job.plots) {
       const fs::path series = work.write(id + "_frames.json", frames);
       plotSeries(series, work.path());
@@ -114,8 +114,8 @@ void runSequenceCommand(const SequenceJob& job, Scene& scene, const RenderSettin
   FrameRunner runner(scene, settings);
   runSequence(job, scene, runner, context->description(), files);
   files.commit();
-  std::cerr << "testbed: wrote " << job.entries.front().technique->info->id << ".mp4, _frames.json, _sequence.json to "
-            << oneLine(out) << "\n";
+  std::cerr << "testbed: wrote " << job.entries.front().technique->info->id
+            << ".mp4, _frames.json, _sequence.json, _frames_shaded.png to " << oneLine(out) << "\n";
 }
 
 }  // namespace testbed
