@@ -16,6 +16,7 @@
 #include "testbed/scene/scene.h"
 #include "tests/cli_helpers.h"
 #include "tests/gl_fixture.h"
+#include "tests/test_scenes.h"
 #include "testbed_test_paths.h"
 
 namespace testbed {
@@ -27,25 +28,12 @@ using namespace testbed::test;
 
 const fs::path kSunField = fs::path(TESTBED_SOURCE_DIR) / "scenes" / "outdoor" / "sun_field.json";
 
-// A 40×40 floor alone under a sun 10° above it: every receiver is lit in the ground truth,
-// so every shadowed pixel of a technique is acne.
-Scene floorUnderLowSun() {
-  const double e = 10 * 3.14159265358979 / 180;
-  const json scene = {
-      {"name", "floor"},
-      {"camera", {{"eye", {0, 30, -40}}, {"target", {0, 0, 0}}}},
-      {"light", {{"type", "directional"}, {"direction", {std::cos(e), -std::sin(e), 0}}}},
-      {"objects", json::array({{{"primitive", "plane"}, {"size", {40, 40}}}})},
-  };
-  return parseScene(scene, "floor.json");
-}
-
 // Shadowed (below 0.5) receivers of `technique` on the floor under `setup`.
 int acnePixels(const ShadowSetup& setup, const std::string& technique, const std::map<std::string, std::string>& set) {
   sharedContext();
   RenderSettings settings = renderSettings({160, 90}, 256);
   settings.shadowSetup = setup;
-  const Scene scene = floorUnderLowSun();
+  const Scene scene = floorUnderSun(10);  // every receiver lit in the ground truth: a shadowed one is acne
   FrameRunner runner(scene, settings);
   const Receivers truth = receiversOf(groundTruthVisibility(runner));
   EXPECT_GT(truth.count, 5000);

@@ -8,16 +8,15 @@
 
 #include <cmath>
 
-#include <nlohmann/json.hpp>
 
 #include "testbed/metrics/metrics.h"
 #include "testbed/scene/scene.h"
 #include "tests/gl_fixture.h"
+#include "tests/test_scenes.h"
 
 namespace testbed {
 namespace {
 
-using nlohmann::json;
 
 constexpr double kPi = 3.14159265358979;
 
@@ -43,24 +42,11 @@ TEST(FacingRule, OneDegreeOfIncidenceIsTheLimit) {
   EXPECT_FALSE(facesLight(spot, {3, 10.01f, 0}, {0, 1, 0}));  // above the light's height
 }
 
-// A floor alone under a sun `elevation` degrees above it: no occluder, so the floor is lit
-// exactly when the elevation passes the facing rule's 1°.
-Scene floorUnderSun(double elevation) {
-  const double e = elevation * kPi / 180;
-  const json scene = {
-      {"name", "floor"},
-      {"camera", {{"eye", {0, 30, -40}}, {"target", {0, 0, 0}}}},
-      {"light", {{"type", "directional"}, {"direction", {std::cos(e), -std::sin(e), 0}}}},
-      {"objects", json::array({{{"primitive", "plane"}, {"size", {40, 40}}}})},
-  };
-  return parseScene(scene, "floor.json");
-}
-
 TEST(FacingRule, GroundTruthAndSmShadowAFloorLitBelowOneDegree) {
   test::sharedContext();
   for (const double elevation : {0.5, 2.0}) {
     SCOPED_TRACE(elevation);
-    const Scene scene = floorUnderSun(elevation);
+    const Scene scene = test::floorUnderSun(elevation);
     FrameRunner runner(scene, test::renderSettings({160, 90}, 256));
     const test::Receivers truth = test::receiversOf(test::groundTruthVisibility(runner));
     const test::Receivers sm = test::receiversOf(test::runTechnique(runner, "sm").visibility);

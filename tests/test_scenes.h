@@ -1,7 +1,10 @@
 #pragma once
 // Small scenes built in code for image tests with analytic answers, shared by the tests of
 // the core passes, the ground truths and the techniques.
+#include <cmath>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "testbed/scene/primitives.h"
 #include "testbed/scene/scene.h"
@@ -48,6 +51,19 @@ inline Scene boxOverPlane(const LightDesc& light) {
   Scene scene = floorScene(light.type == LightType::Spot ? "box-over-plane-spot" : "box-over-plane", light);
   scene.objects.push_back({"box", translated(makeBox(10, 2, 10), {0, 11, 0})});
   return scene;
+}
+
+// A 40 × 40 floor alone under a sun `elevationDeg` above it, read as a scene file is: no
+// occluder, so whatever a technique shadows there is its own doing (acne, the facing rule).
+inline Scene floorUnderSun(double elevationDeg) {
+  const double e = elevationDeg * 3.14159265358979 / 180;
+  const nlohmann::json scene = {
+      {"name", "floor"},
+      {"camera", {{"eye", {0, 30, -40}}, {"target", {0, 0, 0}}}},
+      {"light", {{"type", "directional"}, {"direction", {std::cos(e), -std::sin(e), 0}}}},
+      {"objects", nlohmann::json::array({{{"primitive", "plane"}, {"size", {40, 40}}}})},
+  };
+  return parseScene(scene, "floor.json");
 }
 
 }  // namespace testbed::test

@@ -197,18 +197,7 @@ Placed placeMesh(const MeshInfo& mesh, Draw& draw) {
   const double size = draw.between(10, 22);
   const double rx = std::array<double, 3>{0, -90, 90}[draw.index(3)], ry = r4(draw.between(0, 360));
   const double lift = draw.chance(0.25) ? draw.between(1, size / 2) : 0;
-  const glm::dvec3 extent = mesh.hi - mesh.lo;
-  const double scale = size / std::max({extent.x, extent.y, extent.z});
-  const glm::dvec3 centre = (mesh.lo + mesh.hi) * 0.5;
-  // As the scene parser applies it: fit, then rotate X then Y (parser: Z·Y·X).
-  const glm::dmat4 rotation = glm::rotate(glm::dmat4(1), glm::radians(ry), {0, 1, 0}) *
-                              glm::rotate(glm::dmat4(1), glm::radians(rx), {1, 0, 0});
-  double lo = 1e300, hi = -1e300;
-  for (const auto& p : mesh.points) {
-    const double y = (rotation * glm::dvec4((p - centre) * scale, 1)).y;
-    lo = std::min(lo, y);
-    hi = std::max(hi, y);
-  }
+  const auto [lo, hi] = fittedHeightRange(mesh, size, rx, ry);
   Placed placed;
   placed.foot = {draw.between(-8, 8), 0, draw.between(-8, 8)};
   const glm::dvec3 translate = placed.foot + glm::dvec3(0, lift - lo, 0);
@@ -249,19 +238,6 @@ Json secondOccluder(const glm::dvec3& foot, Draw& draw, double& top, std::string
   object["translate"] = vec({at.x, r4(lift) + height / 2, at.z});
   top = r4(lift) + height;
   return object;
-}
-
-// The largest distance of the box [-40, 40] × [0, top] × [-40, 40] from the directional
-// light's axis through the origin: the half size of a square footprint that holds it.
-double directionalExtent(const glm::dvec3& direction, double top) {
-  double extent = 0;
-  for (double x : {-kPlaneHalf, kPlaneHalf})
-    for (double y : {0.0, top})
-      for (double z : {-kPlaneHalf, kPlaneHalf}) {
-        const glm::dvec3 p(x, y, z);
-        extent = std::max(extent, glm::length(p - glm::dot(p, direction) * direction));
-      }
-  return extent * 1.02;
 }
 
 // Draw `attempt` of scene `index`: its own stream, so that a scene depends neither on the
@@ -325,7 +301,7 @@ SceneSample sampleScene(const CorpusOptions& options, std::size_t index, int att
     light.type = LightType::Directional;
     light.direction = rounded(-toLight);
     light.target = glm::vec3(0);
-    light.extent = float(r4(directionalExtent(-toLight, top)));
+    light.extent = float(r4(squareFootprintExtent(-toLight, kPlaneHalf, top)));
     lightJson = {{"type", "directional"}, {"direction", vec(-toLight)}, {"target", vec({0, 0, 0})}, {"extent", light.extent}};
   }
 

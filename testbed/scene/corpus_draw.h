@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
 namespace testbed::corpus_detail {
@@ -60,6 +61,40 @@ struct MeshInfo {
 inline glm::dvec3 onSphere(double elevationDeg, double azimuthDeg) {
   const double e = glm::radians(elevationDeg), a = glm::radians(azimuthDeg);
   return {std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)};
+}
+
+// The height range [lo, hi] of `mesh` about its centre once fitted to `size` (its longest
+// side) and turned by `rx` degrees about x, then `ry` about y: as the scene parser applies
+// "fit" and "rotate" (Z·Y·X), so a sampler can rest it on the ground.
+struct HeightRange {
+  double lo = 1e300, hi = -1e300;
+};
+inline HeightRange fittedHeightRange(const MeshInfo& mesh, double size, double rx, double ry) {
+  const glm::dvec3 extent = mesh.hi - mesh.lo;
+  const double scale = size / std::max({extent.x, extent.y, extent.z});
+  const glm::dvec3 centre = (mesh.lo + mesh.hi) * 0.5;
+  const glm::dmat4 rotation = glm::rotate(glm::dmat4(1), glm::radians(ry), {0, 1, 0}) *
+                              glm::rotate(glm::dmat4(1), glm::radians(rx), {1, 0, 0});
+  HeightRange range;
+  for (const auto& p : mesh.points) {
+    const double y = (rotation * glm::dvec4((p - centre) * scale, 1)).y;
+    range.lo = std::min(range.lo, y);
+    range.hi = std::max(range.hi, y);
+  }
+  return range;
+}
+
+// The half side of a square footprint, across a directional light's axis through the
+// origin, that holds the box [-half, half] × [0, top] × [-half, half] (2 % spare).
+inline double squareFootprintExtent(const glm::dvec3& direction, double half, double top) {
+  double extent = 0;
+  for (double x : {-half, half})
+    for (double y : {0.0, top})
+      for (double z : {-half, half}) {
+        const glm::dvec3 p(x, y, z);
+        extent = std::max(extent, glm::length(p - glm::dot(p, direction) * direction));
+      }
+  return extent * 1.02;
 }
 
 // One draw of a scene: its JSON and its manifest entry.

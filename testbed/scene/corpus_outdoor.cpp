@@ -6,8 +6,6 @@
 #include <cstdio>
 #include <string>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 namespace testbed {
 namespace {
 
@@ -21,32 +19,10 @@ constexpr int kWalkFps = 24;
 // resting on the ground at `foot`; its top height through `top`.
 Json placeCaster(const MeshInfo& mesh, double size, glm::dvec3 foot, Draw& draw, double& top) {
   const double rx = std::array<double, 3>{0, -90, 90}[draw.index(3)], ry = r4(draw.between(0, 360));
-  const glm::dvec3 extent = mesh.hi - mesh.lo;
-  const double scale = size / std::max({extent.x, extent.y, extent.z});
-  const glm::dvec3 centre = (mesh.lo + mesh.hi) * 0.5;
-  const glm::dmat4 rotation = glm::rotate(glm::dmat4(1), glm::radians(ry), {0, 1, 0}) *
-                              glm::rotate(glm::dmat4(1), glm::radians(rx), {1, 0, 0});
-  double lo = 1e300, hi = -1e300;
-  for (const auto& p : mesh.points) {
-    const double y = (rotation * glm::dvec4((p - centre) * scale, 1)).y;
-    lo = std::min(lo, y);
-    hi = std::max(hi, y);
-  }
+  const auto [lo, hi] = fittedHeightRange(mesh, size, rx, ry);
   const glm::dvec3 translate = foot + glm::dvec3(0, -lo, 0);
   top = r4(translate.y) + hi;
   return {{"mesh", mesh.reference}, {"fit", r4(size)}, {"rotate", vec({rx, ry, 0})}, {"translate", vec(translate)}};
-}
-
-// The half side of a square light footprint holding the ground and everything up to `top`.
-double sunExtent(const glm::dvec3& direction, double top) {
-  double extent = 0;
-  for (double x : {-kOutdoorGroundHalf, kOutdoorGroundHalf})
-    for (double y : {0.0, top})
-      for (double z : {-kOutdoorGroundHalf, kOutdoorGroundHalf}) {
-        const glm::dvec3 p(x, y, z);
-        extent = std::max(extent, glm::length(p - glm::dot(p, direction) * direction));
-      }
-  return extent * 1.02;
 }
 
 glm::dvec3 onGround(glm::dvec3 p, double margin) {
@@ -98,7 +74,7 @@ SceneSample sampleOutdoorScene(const CorpusOptions& options, std::size_t index, 
   const Json light = {{"type", "directional"},
                       {"direction", vec(-toSun)},
                       {"target", vec({0, 0, 0})},
-                      {"extent", r4(sunExtent(-toSun, top))},
+                      {"extent", r4(squareFootprintExtent(-toSun, kOutdoorGroundHalf, top))},
                       {"radius", radiusDeg}};
   const glm::dvec3 target = eye + 40.0 * forward;
   Json scene = {{"name", ""},
