@@ -18,7 +18,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   libembree-dev libcgal-demo assimp-testmodels fonts-dejavu-core
   libimgui-dev libglx-mesa0 libgl1-mesa-dri xvfb
-  python3-matplotlib python3-scipy slurm-wlm munge ffmpeg
+  python3-matplotlib python3-scipy python3-numpy python3-pil slurm-wlm munge ffmpeg
   chromium chromium-driver python3-selenium glslang-tools glslang-dev
   clang libclang-rt-dev
 )
